@@ -1,0 +1,128 @@
+#include "config/params.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "common/input_error.hpp"
+#include "girtd/default_config.hpp"
+
+namespace girtd {
+namespace {
+
+using nlohmann::json;
+
+// Merges `patch` into `base`, refusing keys `base` does not have and values of
+// another JSON type: a typo in a config must not be silently ignored.
+void merge_strict(json& base, const json& patch, const std::string& path, const std::string& origin) {
+  for (auto it = patch.begin(); it != patch.end(); ++it) {
+    const std::string key_path = path.empty() ? it.key() : path + "." + it.key();
+    if (!base.contains(it.key())) throw InputError(origin, 0, "unknown configuration key '" + key_path + "'");
+    json& target = base[it.key()];
+    if (target.is_object()) {
+      if (!it->is_object()) throw InputError(origin, 0, "'" + key_path + "' must be an object");
+      merge_strict(target, *it, key_path, origin);
+      continue;
+    }
+    // A real may replace a real; an integer field takes integers only.
+    const bool both_numbers =
+        target.is_number() && it->is_number() && (!target.is_number_integer() || it->is_number_integer());
+    if (!both_numbers && target.type() != it->type())
+      throw InputError(origin, 0, "'" + key_path + "' has the wrong type (expected " +
+                                      std::string(target.type_name()) + ")");
+    target = *it;
+  }
+}
+
+FixFormat format_of(const json& j, bool has_output) {
+  FixFormat f;
+  f.int_bits = j.at("int_bits").get<int>();
+  f.frac_bits = j.at("frac_bits").get<int>();
+  f.out_bits = has_output ? j.at("out_bits").get<int>() : 0;
+  return f;
+}
+
+void check_format(const FixFormat& f, const char* name, const std::string& origin) {
+  if (f.int_bits < 1 || f.frac_bits < 0 || f.total_bits() > 62)
+    throw InputError(origin, 0, std::string("ep.") + name + ": int_bits + frac_bits must be 1..62");
+  if (f.out_bits > f.int_bits)
+    throw InputError(origin, 0, std::string("ep.") + name + ": out_bits exceeds int_bits");
+}
+
+Params build(const json& j, const std::string& origin) {
+  Params p;
+  try {
+    p.screen_width = j.at("screen").at("width").get<int>();
+    p.screen_height = j.at("screen").at("height").get<int>();
+    const json& ep = j.at("ep");
+    p.ep_color = format_of(ep.at("color"), true);
+    p.ep_t = format_of(ep.at("t"), true);
+    p.ep_z = format_of(ep.at("z"), true);
+    p.ep_d = format_of(ep.at("d"), false);
+    p.xy_bits = ep.at("xy_bits").get<int>();
+    p.norm_frac_bits = j.at("nf").at("norm_frac_bits").get<int>();
+    p.prom_frac_bits = j.at("nf").at("prom_frac_bits").get<int>();
+    const json& dda = j.at("dda");
+    p.dda_clock_ns = dda.at("clock_ns").get<double>();
+    p.xy_compare_pipelined = dda.at("xy_compare_pipelined").get<bool>();
+    p.walk_fix = dda.at("walk_fix").get<bool>();
+    p.output_latency_clocks = dda.at("output_latency_clocks").get<int>();
+    const std::string omn = j.at("had").at("one_minus_nf").get<std::string>();
+    if (omn == "exact") p.one_minus_nf = OneMinusNf::kExact;
+    else if (omn == "invert_bits") p.one_minus_nf = OneMinusNf::kInvertBits;
+    else throw InputError(origin, 0, "had.one_minus_nf must be \"exact\" or \"invert_bits\"");
+    p.had_access_ns = j.at("had").at("access_ns").get<double>();
+    p.vram_cycle_ns = j.at("vram").at("cycle_ns").get<double>();
+    p.fifo_dda_had_depth = j.at("fifo").at("dda_had_depth").get<int>();
+    p.depth_clear = j.at("depth").at("clear").get<int>();
+    p.depth_max_mapped = j.at("depth").at("max_mapped").get<int>();
+    p.target_mpixels_per_s = j.at("targets").at("mpixels_per_s").get<double>();
+    p.stage_flops_per_s = j.at("targets").at("stage_flops_per_s").get<double>();
+  } catch (const json::exception& e) {
+    throw InputError(origin, 0, std::string("bad configuration: ") + e.what());
+  }
+  check_format(p.ep_color, "color", origin);
+  check_format(p.ep_t, "t", origin);
+  check_format(p.ep_z, "z", origin);
+  check_format(p.ep_d, "d", origin);
+  if (p.ep_color.out_bits != 8 || p.ep_t.out_bits != 8 || p.ep_z.out_bits != 16)
+    throw InputError(origin, 0, "the HAD takes 8-bit colour and T and 16-bit Z outputs");
+  if (p.norm_frac_bits != 8)
+    throw InputError(origin, 0, "nf.norm_frac_bits must be 8: the HAD multiplies 8 x 8 bits");
+  if (p.ep_d.frac_bits < p.norm_frac_bits)
+    throw InputError(origin, 0, "ep.d.frac_bits must be at least nf.norm_frac_bits");
+  if (p.prom_frac_bits < 1 || p.prom_frac_bits * 2 > 16 || p.prom_frac_bits > p.norm_frac_bits)
+    throw InputError(origin, 0, "nf.prom_frac_bits must be 1..min(8, norm_frac_bits)");
+  if (p.screen_width != 1024 || p.screen_height != 1024)
+    throw InputError(origin, 0, "GIRTD's frame is 1024 x 1024 (use a window for smaller pictures)");
+  if (p.dda_clock_ns <= 0 || p.had_access_ns <= 0 || p.vram_cycle_ns <= 0)
+    throw InputError(origin, 0, "clock periods must be positive");
+  p.source = j;
+  return p;
+}
+
+json builtin_json() { return json::parse(kDefaultConfigJson); }
+
+}  // namespace
+
+Params Params::defaults() { return build(builtin_json(), kDefaultConfigPath); }
+
+Params Params::with_overrides(const json& override_json, const std::string& origin) {
+  json merged = builtin_json();
+  if (!override_json.is_object()) throw InputError(origin, 0, "a configuration must be a JSON object");
+  merge_strict(merged, override_json, "", origin);
+  return build(merged, origin);
+}
+
+Params Params::from_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "cannot open configuration file");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InputError(path, 0, std::string("not valid JSON: ") + e.what());
+  }
+  return with_overrides(j, path);
+}
+
+}  // namespace girtd

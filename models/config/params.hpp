@@ -1,0 +1,55 @@
+// Run-time view of config/girtd.json. Every field comes from the JSON (the
+// built-in copy, optionally overridden by a user file); nothing here has a
+// default of its own, so a width or timing is never written twice.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "common/fixed_point.hpp"
+
+namespace girtd {
+
+enum class OneMinusNf { kExact, kInvertBits };
+
+struct Params {
+  int screen_width;
+  int screen_height;
+
+  FixFormat ep_color;  // R, G, B
+  FixFormat ep_t;      // transparency T (0..256 scale, 255 at the output = 1.0)
+  FixFormat ep_z;
+  FixFormat ep_d;      // edge distances D1..D3 (no output saturation)
+  int xy_bits;
+
+  int norm_frac_bits;  // n_i and nf fraction bits (1.8)
+  int prom_frac_bits;  // operand fraction bits of the U >= 2 product table (1.4)
+
+  double dda_clock_ns;
+  bool xy_compare_pipelined;  // TTL option: +1 clock at every run end
+  bool walk_fix;              // robust start/walk (GIRTD.md §11); false = DDApix as written
+  int output_latency_clocks;  // fig. 4.17 output registers
+
+  OneMinusNf one_minus_nf;
+  double had_access_ns;
+  double vram_cycle_ns;
+
+  int fifo_dda_had_depth;
+  int depth_clear;
+  int depth_max_mapped;
+
+  double target_mpixels_per_s;
+  double stage_flops_per_s;
+
+  nlohmann::json source;  // the merged JSON, echoed into reports
+
+  // The built-in configuration (config/girtd.json at build time).
+  static Params defaults();
+  // Built-in configuration with `override_json` merged over it. Unknown keys
+  // and wrong types raise InputError naming `origin`.
+  static Params with_overrides(const nlohmann::json& override_json, const std::string& origin);
+  static Params from_file(const std::string& path);
+};
+
+}  // namespace girtd

@@ -1,0 +1,222 @@
+#include "dda/dda_engine.hpp"
+
+#include <stdexcept>
+
+#include "common/fixed_point.hpp"
+#include "dda/nf_unit.hpp"
+
+namespace girtd {
+namespace {
+
+// The DDA's registers: X, Y counters and 8 adder EPs, each with an AUX copy.
+struct Registers {
+  int x = 0, y = 0;
+  std::array<int64_t, kEpCount> v{};
+};
+
+class Datapath {
+ public:
+  Datapath(const Params& p, const DdaParams& in) : in_(in), xy_bits_(p.xy_bits) {
+    for (int i = 0; i < kEpCount; ++i) fmt_[i] = &p.ep_d;
+    fmt_[kEpR] = fmt_[kEpG] = fmt_[kEpB] = &p.ep_color;
+    fmt_[kEpT] = &p.ep_t;
+    fmt_[kEpZ] = &p.ep_z;
+    pix_.x = in.x0;
+    pix_.y = in.y0;
+    for (int i = 0; i < kEpCount; ++i) pix_.v[i] = wrap(in.ep[i].v, *fmt_[i]);
+  }
+
+  void step_x(int s) {
+    pix_.x = static_cast<int>(wrap_to_bits(pix_.x + s, xy_bits_));
+    for (int i = 0; i < kEpCount; ++i) pix_.v[i] = wrap(pix_.v[i] + s * in_.ep[i].dx, *fmt_[i]);
+  }
+  void step_y() {
+    pix_.y = static_cast<int>(wrap_to_bits(pix_.y + 1, xy_bits_));
+    for (int i = 0; i < kEpCount; ++i) pix_.v[i] = wrap(pix_.v[i] + in_.ep[i].dy, *fmt_[i]);
+  }
+  void save() { aux_ = pix_; }
+  void restore() { pix_ = aux_; }
+
+  const Registers& pix() const { return pix_; }
+  const FixFormat& format(int ep) const { return *fmt_[ep]; }
+
+ private:
+  const DdaParams& in_;
+  int xy_bits_;
+  const FixFormat* fmt_[kEpCount];
+  Registers pix_, aux_;
+};
+
+}  // namespace
+
+DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const ClockProbe& probe) const {
+  Datapath dp(params_, in);
+  const NormUnit norm(params_.ep_d, params_.norm_frac_bits, in.q);
+  const bool fix = params_.walk_fix;
+  const bool pipelined_compare = params_.xy_compare_pipelined;
+
+  auto d_inside = [&](const Registers& r) {
+    return norm.inside(r.v[kEpD1]) && norm.inside(r.v[kEpD2]) && norm.inside(r.v[kEpD3]);
+  };
+  auto in_limits = [&](const Registers& r) { return r.x >= in.xmin && r.x <= in.xmax; };
+  auto inside = [&](const Registers& r) { return in_limits(r) && d_inside(r); };
+  // DIR (§4.2.4): the sign of D'x of the first edge whose Norm is 0; +1 = right.
+  // 0 = no horizontal way in (the edge is horizontal).
+  auto dir = [&](const Registers& r) -> int {
+    if (r.x < in.xmin) return +1;
+    if (r.x > in.xmax) return -1;
+    for (int e = kEpD1; e <= kEpD3; ++e)
+      if (!norm.inside(r.v[e])) return in.ep[e].dx < 0 ? -1 : (in.ep[e].dx > 0 || !fix ? +1 : 0);
+    return +1;
+  };
+  auto can_step = [&](const Registers& r, int s) { return s > 0 ? r.x < in.xmax : r.x > in.xmin; };
+
+  DdaRunStats st;
+  DdaState state = DdaState::kCheck, after_wait = DdaState::kCheck;
+  int walk_dir = +1;
+  bool first_check = true;
+  // A run's end costs one more clock when the X/Y compare is pipelined (TTL).
+  auto end_run = [&](DdaState next) {
+    if (!pipelined_compare) return next;
+    after_wait = next;
+    return DdaState::kWait;
+  };
+  const uint64_t width = static_cast<uint64_t>(in.xmax - in.xmin + 1);
+  const uint64_t rows = static_cast<uint64_t>(in.ymax - in.y0 + 2);
+  const uint64_t clock_bound = (3 * width + 16) * rows + 16;
+
+  for (;;) {
+    const Registers r = dp.pix();  // this clock's pixel, before the clock's op
+    const DdaState now = state;
+    bool emit = false, done = false;
+    auto emit_here = [&] {
+      emit = true;
+      if (!sink) return;
+      DdaEmit e;
+      e.raw = r.v;
+      e.cycle = st.cycles + static_cast<uint64_t>(params_.output_latency_clocks);
+      e.pixel.x = r.x;
+      e.pixel.y = r.y;
+      e.pixel.r = static_cast<uint8_t>(saturate_output(r.v[kEpR], params_.ep_color));
+      e.pixel.g = static_cast<uint8_t>(saturate_output(r.v[kEpG], params_.ep_color));
+      e.pixel.b = static_cast<uint8_t>(saturate_output(r.v[kEpB], params_.ep_color));
+      e.pixel.z = static_cast<uint16_t>(saturate_output(r.v[kEpZ], params_.ep_z));
+      const int t = t_operand(saturate_output(r.v[kEpT], params_.ep_t));
+      e.pixel.nf = static_cast<uint16_t>(compute_nf(norm.norm(r.v[kEpD1]), norm.norm(r.v[kEpD2]),
+                                                    norm.norm(r.v[kEpD3]), t, params_.prom_frac_bits));
+      sink(e);
+    };
+
+    switch (now) {
+      case DdaState::kCheck:
+        if (r.y > in.ymax) {
+          done = true;
+        } else if (inside(r)) {
+          dp.save();
+          state = DdaState::kRight;
+        } else if (!fix && first_check) {  // DDApix: an outside start skips its row
+          dp.step_y();
+        } else {
+          walk_dir = dir(r);
+          if (walk_dir == 0) {
+            dp.step_y();
+          } else if (!can_step(r, walk_dir)) {
+            if (fix) dp.step_y();
+            else done = st.ended_at_limit = true;
+          } else {
+            dp.step_x(walk_dir);
+            state = DdaState::kWalk;
+          }
+        }
+        first_check = false;
+        break;
+
+      case DdaState::kWalk:
+        if (inside(r)) {
+          dp.save();
+          state = DdaState::kRun;
+        } else if (fix && dir(r) != walk_dir) {  // walked across a row with no pixel
+          dp.step_y();
+          state = DdaState::kCheck;
+        } else if (!can_step(r, walk_dir)) {
+          if (fix) {
+            dp.step_y();
+            state = DdaState::kCheck;
+          } else {
+            done = st.ended_at_limit = true;
+          }
+        } else {
+          dp.step_x(walk_dir);
+        }
+        break;
+
+      case DdaState::kRight:
+        if (inside(r)) {
+          emit_here();
+          if (r.x < in.xmax) {
+            dp.step_x(+1);
+            break;
+          }
+        }
+        dp.restore();
+        state = end_run(DdaState::kLStep);
+        break;
+
+      case DdaState::kLStep:
+        if (r.x > in.xmin) {
+          dp.step_x(-1);
+          state = DdaState::kLeft;
+        } else {
+          dp.step_y();
+          state = end_run(DdaState::kCheck);
+        }
+        break;
+
+      case DdaState::kLeft:
+        if (inside(r)) {
+          emit_here();
+          if (r.x > in.xmin) {
+            dp.step_x(-1);
+            break;
+          }
+        }
+        dp.step_y();
+        state = end_run(DdaState::kCheck);
+        break;
+
+      case DdaState::kRun:
+        if (inside(r)) {
+          emit_here();
+          if (can_step(r, walk_dir)) {
+            dp.step_x(walk_dir);
+            break;
+          }
+        }
+        dp.restore();
+        state = end_run(DdaState::kYStep);
+        break;
+
+      case DdaState::kYStep:
+        dp.step_y();
+        state = DdaState::kCheck;
+        break;
+
+      case DdaState::kWait:
+        state = after_wait;
+        break;
+
+      case DdaState::kCount:
+        throw std::logic_error("DDA: invalid state");
+    }
+
+    ++st.cycles;
+    st.emitted += emit;
+    ++st.per_state[static_cast<int>(now)];
+    if (probe) probe(DdaClock{now, r.x, r.y, emit});
+    if (done) break;
+    if (st.cycles > clock_bound) throw std::logic_error("DDA: traversal did not terminate");
+  }
+  return st;
+}
+
+}  // namespace girtd

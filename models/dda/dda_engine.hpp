@@ -1,0 +1,55 @@
+// The golden DDA (§4, fig. 4.2 / the thesis' DDApix) as a clocked state
+// machine: every clock does one unit move (X++, X--, Y++) or one AUX
+// transfer, decided from the registers as they stand. The state table is in
+// models/dda/README.md. Bit-exact specification for hw/dda.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+
+#include "common/types.hpp"
+#include "config/params.hpp"
+#include "dda/dda_params.hpp"
+
+namespace girtd {
+
+enum class DdaState : uint8_t { kCheck, kRight, kLStep, kLeft, kWalk, kRun, kYStep, kWait, kCount };
+inline constexpr const char* kDdaStateNames[] = {"CHECK", "RIGHT", "LSTEP", "LEFT",
+                                                 "WALK",  "RUN",   "YSTEP", "WAIT"};
+
+struct DdaEmit {
+  Pixel pixel;
+  uint64_t cycle = 0;                     // clock the pixel leaves the DDA (state clock + latency)
+  std::array<int64_t, kEpCount> raw{};    // EP registers at emission, before output stages
+};
+
+// One clock as seen from outside: the state, the pixel position, whether it emitted.
+struct DdaClock {
+  DdaState state;
+  int x, y;
+  bool emitted;
+};
+
+struct DdaRunStats {
+  uint64_t cycles = 0;
+  uint64_t emitted = 0;
+  std::array<uint64_t, static_cast<int>(DdaState::kCount)> per_state{};
+  bool ended_at_limit = false;  // DDApix as written ended a walk at Xmin/Xmax
+  uint64_t wasted() const { return cycles - emitted; }
+};
+
+class DdaEngine {
+ public:
+  using PixelSink = std::function<void(const DdaEmit&)>;
+  using ClockProbe = std::function<void(const DdaClock&)>;
+
+  explicit DdaEngine(const Params& p) : params_(p) {}
+
+  DdaRunStats run(const DdaParams& in, const PixelSink& sink, const ClockProbe& probe = {}) const;
+
+ private:
+  const Params& params_;
+};
+
+}  // namespace girtd

@@ -1,0 +1,36 @@
+// The DDA preparer (§3, 4.3.3): float triangle in, fixed-point parameter set
+// out. Winding, edge equations and the start point come from the shared
+// triangle setup; this adds the integer start pixel and limits and the
+// conversion to the EP formats of config/girtd.json.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "common/types.hpp"
+#include "config/params.hpp"
+#include "dda/dda_params.hpp"
+
+namespace girtd {
+
+enum class PrepareResult { kReady, kDegenerate, kOffWindow, kNoLatticeRow };
+
+struct PreparerCounts {
+  uint64_t prepared = 0, degenerate = 0, off_window = 0, no_lattice_row = 0;
+  uint64_t clamped_values = 0;  // a start value or derivative that did not fit its EP
+};
+
+class DdaPreparer {
+ public:
+  explicit DdaPreparer(const Params& p) : params_(p) {}
+
+  // Fills `out` and returns kReady, or says why the triangle was discarded.
+  PrepareResult prepare(const Triangle& t, const FrameSettings& f, DdaParams& out);
+  const PreparerCounts& counts() const { return counts_; }
+
+ private:
+  const Params& params_;
+  PreparerCounts counts_;
+};
+
+}  // namespace girtd

@@ -1,0 +1,39 @@
+// Golden HAD (display update, §6 and the thesis' HadPix, §11): off-screen
+// pixels and nf = 0 are dropped, Z < Zb passes, nf = 1 writes R, G, B and Z,
+// 0 < nf < 1 blends R, G, B and keeps Z.
+#pragma once
+
+#include <cstdint>
+
+#include "common/types.hpp"
+#include "config/params.hpp"
+#include "had/frame_buffer.hpp"
+
+namespace girtd {
+
+enum class HadOutcome { kWritten, kBlended, kZRejected, kDropped };
+
+struct HadCounts {
+  uint64_t written = 0, blended = 0, z_rejected = 0, dropped = 0;
+  uint64_t total() const { return written + blended + z_rejected + dropped; }
+};
+
+// Cb = C nf + Cb (1 - nf) with 8 x 8 multiplies that keep the high byte; the
+// two products are truncated separately, as the hardware adds two bytes.
+// `nf` is 1..255 (0.8); 1 - nf is exact (256 - nf) or the inverted bits (255 - nf).
+uint8_t blend_channel(uint8_t c, uint8_t cb, int nf, OneMinusNf rule);
+
+class Had {
+ public:
+  Had(FrameBuffer& fb, OneMinusNf rule) : fb_(fb), rule_(rule) {}
+
+  HadOutcome update(const Pixel& p);
+  const HadCounts& counts() const { return counts_; }
+
+ private:
+  FrameBuffer& fb_;
+  OneMinusNf rule_;
+  HadCounts counts_;
+};
+
+}  // namespace girtd

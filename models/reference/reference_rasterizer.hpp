@@ -1,0 +1,33 @@
+// The floating-point yardstick: the same triangles in double precision,
+// coverage by Norm_Q of the exact edge distances at every lattice point of the
+// Q-widened box, Gouraud attributes from the exact planes. It draws the pixel
+// set the DDA is meant to draw, with no fixed-point error.
+#pragma once
+
+#include <array>
+#include <functional>
+
+#include "common/triangle_setup.hpp"
+#include "common/types.hpp"
+
+namespace girtd {
+
+struct ReferenceSample {
+  int x = 0, y = 0;
+  double r = 0, g = 0, b = 0, t = 0, z = 0;  // unclamped plane values
+  std::array<double, 3> d{};                  // edge distances
+  double nf = 0;                              // T n1 n2 n3, T clamped to 0..1
+};
+
+using ReferenceSink = std::function<void(const ReferenceSample&)>;
+
+// Emits every lattice pixel inside the fringe box with all D_i > -Q (Q > 0)
+// or all D_i >= 0 (Q = 0). Returns false when the triangle is discarded
+// (no area, or it misses the window).
+bool rasterize_reference(const Triangle& t, const FrameSettings& f, const ReferenceSink& sink);
+
+// The HAD's view of a sample, with the hardware's output rules: truncation,
+// saturation to 0..255 / 0..65535, nf as 1.8.
+Pixel quantize_reference(const ReferenceSample& s);
+
+}  // namespace girtd

@@ -1,0 +1,35 @@
+// A back end draws the primitives of one frame into the HAD. The CLI's
+// --backend picks one; the render session around it is shared.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "backends/run_stats.hpp"
+#include "config/params.hpp"
+#include "had/had.hpp"
+#include "io/trace.hpp"
+
+namespace girtd {
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual std::string name() const = 0;
+  // Report keys this back end cannot know (their values are null).
+  virtual std::vector<std::string> not_modeled() const = 0;
+  // Throws InputError (naming `origin`) for input this back end cannot take.
+  virtual void check_input(const Trace& trace) const = 0;
+  virtual void draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) = 0;
+  // Per-stage rows for the report, after the last frame.
+  virtual void finish(RunStats& stats) const = 0;
+};
+
+// "reference", "golden"; asking for a back end that is not built yet
+// ("approx", "rtl") is a usage error.
+std::unique_ptr<Backend> make_backend(const std::string& name, const Params& params);
+
+std::vector<std::string> known_backends();
+
+}  // namespace girtd

@@ -1,0 +1,56 @@
+#include "backends/golden_backend.hpp"
+
+#include "common/input_error.hpp"
+#include "common/triangle_setup.hpp"
+
+namespace girtd {
+
+void accumulate(DdaRunStats& total, const DdaRunStats& one) {
+  total.cycles += one.cycles;
+  total.emitted += one.emitted;
+  for (size_t i = 0; i < total.per_state.size(); ++i) total.per_state[i] += one.per_state[i];
+  total.ended_at_limit = total.ended_at_limit || one.ended_at_limit;
+}
+
+std::vector<std::string> GoldenBackend::not_modeled() const {
+  return {"modeled_time_s", "modeled_mpixels_per_s", "bottleneck", "cache.accesses",
+          "cache.page_misses", "cache.nac", "stages.*.busy_s", "stages.*.stall_s"};
+}
+
+void GoldenBackend::check_input(const Trace& trace) const {
+  for (const TraceFrame& f : trace.frames)
+    if (!is_hardware_q(f.settings.q))
+      throw InputError(trace.path, f.settings.q_line,
+                       "Q must be 0 or a power of two 1/16..8 for the hardware back ends (Norm is a shift)");
+}
+
+void GoldenBackend::run_dda(const DdaParams& p, Had& had, RunStats& stats) {
+  const DdaRunStats one = engine_.run(p, [&](const DdaEmit& e) {
+    ++stats.pixels_generated;
+    had.update(e.pixel);
+  });
+  if (!stats.dda) stats.dda = DdaRunStats{};
+  accumulate(*stats.dda, one);
+  ++stats.triangles_drawn;
+}
+
+void GoldenBackend::draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) {
+  DdaParams p;
+  for (const Triangle& t : frame.triangles) {
+    ++stats.triangles_in;
+    if (preparer_.prepare(t, frame.settings, p) == PrepareResult::kReady) run_dda(p, had, stats);
+  }
+  for (const DdaParams& d : frame.dda) {
+    ++stats.triangles_in;
+    run_dda(d, had, stats);
+  }
+}
+
+void GoldenBackend::finish(RunStats& stats) const {
+  stats.preparer = preparer_.counts();
+  stats.stages.push_back({"preparer", preparer_.counts().prepared, std::nullopt, std::nullopt});
+  stats.stages.push_back({"dda", stats.triangles_drawn, std::nullopt, std::nullopt});
+  stats.stages.push_back({"had", stats.pixels_generated, std::nullopt, std::nullopt});
+}
+
+}  // namespace girtd

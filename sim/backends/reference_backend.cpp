@@ -1,0 +1,35 @@
+#include "backends/reference_backend.hpp"
+
+#include "common/input_error.hpp"
+#include "reference/reference_rasterizer.hpp"
+
+namespace girtd {
+
+std::vector<std::string> ReferenceBackend::not_modeled() const {
+  return {"dda_cycles", "dda_efficiency", "modeled_time_s", "modeled_mpixels_per_s", "bottleneck",
+          "cache.accesses", "cache.page_misses", "cache.nac", "stages.*.busy_s", "stages.*.stall_s"};
+}
+
+void ReferenceBackend::check_input(const Trace& trace) const {
+  if (trace.level != TraceLevel::kTriangle)
+    throw InputError(trace.path, 0,
+                     "the reference back end needs triangle-level input (a DDA trace holds no float triangles)");
+}
+
+void ReferenceBackend::draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) {
+  for (const Triangle& t : frame.triangles) {
+    ++stats.triangles_in;
+    const bool drawn = rasterize_reference(t, frame.settings, [&](const ReferenceSample& s) {
+      ++stats.pixels_generated;
+      had.update(quantize_reference(s));
+    });
+    stats.triangles_drawn += drawn;
+  }
+}
+
+void ReferenceBackend::finish(RunStats& stats) const {
+  stats.stages.push_back({"reference_raster", stats.triangles_drawn, std::nullopt, std::nullopt});
+  stats.stages.push_back({"had", stats.pixels_generated, std::nullopt, std::nullopt});
+}
+
+}  // namespace girtd

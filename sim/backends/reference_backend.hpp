@@ -1,0 +1,17 @@
+// --backend reference: the floating-point rasterizer through the golden HAD.
+#pragma once
+
+#include "backends/backend.hpp"
+
+namespace girtd {
+
+class ReferenceBackend : public Backend {
+ public:
+  std::string name() const override { return "reference"; }
+  std::vector<std::string> not_modeled() const override;
+  void check_input(const Trace& trace) const override;
+  void draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) override;
+  void finish(RunStats& stats) const override;
+};
+
+}  // namespace girtd

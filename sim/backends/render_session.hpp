@@ -1,0 +1,38 @@
+// Runs a trace through one back end, frame by frame (clear, draw, swap),
+// optionally recording the stream at a stage boundary (--dump).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "backends/backend.hpp"
+#include "had/frame_buffer.hpp"
+#include "io/png_io.hpp"
+#include "io/trace.hpp"
+
+namespace girtd {
+
+struct DumpRequest {
+  TraceLevel level;
+  std::string path;
+};
+
+struct RenderOutput {
+  RunStats stats;
+  RgbImage shown;                   // the displayed buffer after the last frame
+  std::vector<uint16_t> z;          // the Z buffer after the last frame
+  std::vector<RgbImage> per_frame;  // with keep_all_frames
+};
+
+struct RenderOptions {
+  bool keep_all_frames = false;
+  std::optional<DumpRequest> dump;
+  bool progress = false;  // a progress line on stderr for runs longer than a second
+};
+
+RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& params, const RenderOptions& opt);
+
+RgbImage shown_image(const FrameBuffer& fb);
+
+}  // namespace girtd

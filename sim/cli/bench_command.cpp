@@ -1,0 +1,97 @@
+// girtd bench: every sample trace on every built back end; wall time, pixel
+// rate of the simulator, and the frame's error against the reference.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "backends/render_session.hpp"
+#include "cli/commands.hpp"
+#include "cli/config_loader.hpp"
+#include "cli/output_set.hpp"
+#include "common/input_error.hpp"
+#include "io/trace_reader.hpp"
+
+namespace girtd {
+namespace fs = std::filesystem;
+
+namespace {
+
+struct ImageError {
+  double mean_abs = 0;
+  int max_abs = 0;
+  double differing_fraction = 0;
+};
+
+ImageError compare(const RgbImage& a, const RgbImage& b) {
+  ImageError e;
+  uint64_t sum = 0, differing = 0;
+  const size_t n = a.rgb.size() / 3;
+  for (size_t i = 0; i < n; ++i) {
+    bool diff = false;
+    for (int c = 0; c < 3; ++c) {
+      const int d = std::abs(int(a.rgb[3 * i + c]) - int(b.rgb[3 * i + c]));
+      sum += d;
+      e.max_abs = std::max(e.max_abs, d);
+      diff = diff || d != 0;
+    }
+    differing += diff;
+  }
+  e.mean_abs = double(sum) / double(3 * n);
+  e.differing_fraction = double(differing) / double(n);
+  return e;
+}
+
+std::vector<std::string> sample_traces() {
+  std::vector<std::string> out;
+  if (!fs::is_directory("traces")) throw InputError("traces", 0, "run bench from the repository root (no traces/ here)");
+  for (const auto& e : fs::directory_iterator("traces"))
+    if (e.path().extension() == ".trace") out.push_back(e.path().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+int run_bench(const std::string& config, const std::string& out_dir) {
+  const Params params = load_params(config);
+  nlohmann::json rows = nlohmann::json::array();
+  std::string md =
+      "| trace | back end | triangles | pixels | wall s | sim Mpixel/s | mean abs err | max abs err | pixels differing |\n"
+      "|---|---|---|---|---|---|---|---|---|\n";
+  for (const std::string& path : sample_traces()) {
+    const Trace trace = read_trace(path, std::nullopt, params);
+    if (trace.level != TraceLevel::kTriangle) continue;
+    RgbImage reference;
+    for (const std::string name : {"reference", "golden"}) {
+      auto backend = make_backend(name, params);
+      const RenderOutput out = render_trace(trace, *backend, params, {});
+      if (name == "reference") reference = out.shown;
+      const ImageError err = compare(out.shown, reference);
+      const double rate = out.stats.wall_s > 0 ? double(out.stats.pixels_generated) / out.stats.wall_s / 1e6 : 0;
+      rows.push_back({{"trace", path}, {"backend", name}, {"triangles", out.stats.triangles_in},
+                      {"pixels_generated", out.stats.pixels_generated}, {"wall_s", out.stats.wall_s},
+                      {"sim_mpixels_per_s", rate}, {"mean_abs_error", err.mean_abs}, {"max_abs_error", err.max_abs},
+                      {"differing_fraction", err.differing_fraction}});
+      char line[512];
+      std::snprintf(line, sizeof line, "| %s | %s | %llu | %llu | %.3f | %.2f | %.4f | %d | %.4f %% |\n",
+                    fs::path(path).filename().c_str(), name.c_str(),
+                    static_cast<unsigned long long>(out.stats.triangles_in),
+                    static_cast<unsigned long long>(out.stats.pixels_generated), out.stats.wall_s, rate, err.mean_abs,
+                    err.max_abs, 100 * err.differing_fraction);
+      md += line;
+      std::fputs(line, stdout);
+      std::fflush(stdout);
+    }
+  }
+  OutputSet files(out_dir);
+  files.add_text("bench.json", nlohmann::json{{"rows", rows}, {"config", params.source}}.dump(2) + "\n");
+  files.add_text("bench.md", "# girtd bench\n\nError is against the reference back end's frame (0..255 per channel).\n\n" + md);
+  files.commit();
+  std::printf("wrote %s and %s\n", files.path("bench.json").c_str(), files.path("bench.md").c_str());
+  return 0;
+}
+
+}  // namespace girtd

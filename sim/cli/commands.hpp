@@ -1,0 +1,31 @@
+// The girtd subcommands. Each returns the process exit code (CONTRACT.md):
+// 0 success, 1 a check failed, 2 bad input or usage (InputError).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace girtd {
+
+struct RenderArgs {
+  std::string input;
+  std::string backend = "golden";
+  std::string out_dir;  // default out/<input stem>
+  std::string level;
+  std::string frames = "last";
+  std::string wave, wave_window;
+  std::vector<std::string> wave_scopes;
+  std::optional<double> aa;
+  std::string dump;  // LEVEL=FILE
+  std::string config;
+  bool z_png = false;
+  bool quiet = false;
+};
+
+int run_render(const RenderArgs& a);
+int run_claims(const std::string& config);
+int run_bench(const std::string& config, const std::string& out_dir);
+int run_regress(const std::vector<std::string>& traces);
+
+}  // namespace girtd

@@ -1,0 +1,66 @@
+// girtd: the simulator's command line (../shared/CONTRACT.md).
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+#include "cli/commands.hpp"
+#include "common/input_error.hpp"
+
+int main(int argc, char** argv) {
+  using namespace girtd;
+  CLI::App app{"GIRTD-sim: cycle-approximate simulator of the GIRTD 3D image generator (1988)"};
+  app.require_subcommand(1);
+
+  RenderArgs ra;
+  CLI::App* render = app.add_subcommand("render", "render a trace (or, later, a model or scene)");
+  render->add_option("input", ra.input, "trace file (traces/FORMAT.md)")->required();
+  render->add_option("--backend", ra.backend, "reference | golden | approx | rtl")->capture_default_str();
+  render->add_option("--out", ra.out_dir, "output directory (default out/<input name>/)");
+  render->add_option("--level", ra.level, "level of a headerless trace: triangle | dda");
+  render->add_option("--frames", ra.frames, "last | all (one PNG per frame)")->capture_default_str();
+  render->add_option("--wave", ra.wave, "waveform file (.fst or .vcd)");
+  render->add_option("--wave-window", ra.wave_window, "T0:T1 window of the waveform");
+  render->add_option("--wave-scope", ra.wave_scopes, "module path to record (repeatable)");
+  render->add_option("--aa", ra.aa, "antialiasing width Q for every frame (overrides the trace)");
+  render->add_option("--dump", ra.dump, "LEVEL=FILE: record the stream at a stage boundary");
+  render->add_option("--config", ra.config, "JSON file merged over config/girtd.json");
+  render->add_flag("--z-png", ra.z_png, "also write z.png (16-bit depth)");
+  render->add_flag("--quiet", ra.quiet, "print nothing on success");
+
+  std::string claims_config;
+  CLI::App* claims = app.add_subcommand("claims", "the thesis' claims (GIRTD.md §9) against measurements");
+  claims->add_option("--config", claims_config, "JSON file merged over config/girtd.json");
+
+  std::string bench_config, bench_out = "out/bench";
+  CLI::App* bench = app.add_subcommand("bench", "speed and error tables of the back ends");
+  bench->add_option("--config", bench_config, "JSON file merged over config/girtd.json");
+  bench->add_option("--out", bench_out, "output directory")->capture_default_str();
+
+  std::vector<std::string> regress_traces;
+  CLI::App* regress = app.add_subcommand("regress", "RTL against the golden model, trace by trace");
+  regress->add_option("traces", regress_traces, "traces (default: every trace in traces/)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "girtd: %s\n", e.what());
+    return 2;
+  }
+
+  try {
+    if (*render) return run_render(ra);
+    if (*claims) return run_claims(claims_config);
+    if (*bench) return run_bench(bench_config, bench_out);
+    if (*regress) return run_regress(regress_traces);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s\n", e.formatted().c_str());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "girtd: internal error: %s\n", e.what());
+    return 3;
+  }
+  return 2;
+}

@@ -1,0 +1,30 @@
+// Output files of one run, written under temporary names and moved into
+// place together at the end: an error leaves nothing half-written.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace girtd {
+
+class OutputSet {
+ public:
+  explicit OutputSet(std::string dir) : dir_(std::move(dir)) {}
+  ~OutputSet();
+  // `write(tmp_path)` writes the file's content to the temporary path.
+  void add(const std::string& name, const std::function<void(const std::string&)>& write);
+  void add_text(const std::string& name, const std::string& text);
+  // Creates the directory and renames every file into place.
+  void commit();
+  std::string path(const std::string& name) const { return dir_ + "/" + name; }
+
+ private:
+  std::string dir_;
+  std::vector<std::string> names_;
+  std::vector<std::function<void(const std::string&)>> writers_;
+  std::vector<std::string> written_tmp_;
+  bool committed_ = false;
+};
+
+}  // namespace girtd

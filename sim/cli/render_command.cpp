@@ -1,0 +1,118 @@
+// girtd render: trace in, frame.png + report.json + report.md out.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "backends/render_session.hpp"
+#include "cli/commands.hpp"
+#include "cli/config_loader.hpp"
+#include "cli/output_set.hpp"
+#include "common/input_error.hpp"
+#include "common/triangle_setup.hpp"
+#include "io/png_io.hpp"
+#include "io/report.hpp"
+#include "io/sha256.hpp"
+#include "io/trace_reader.hpp"
+
+namespace girtd {
+namespace fs = std::filesystem;
+
+namespace {
+
+DumpRequest parse_dump(const std::string& spec) {
+  const size_t eq = spec.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == spec.size())
+    throw InputError("--dump", 0, "expected LEVEL=FILE, got '" + spec + "'");
+  return {parse_level(spec.substr(0, eq), "--dump", 0), spec.substr(eq + 1)};
+}
+
+void reject_unbuilt_options(const RenderArgs& a) {
+  if (!a.wave.empty() || !a.wave_window.empty() || !a.wave_scopes.empty())
+    throw InputError("--wave", 0, "waveforms come with the rtl back end, which is not built yet");
+  if (a.frames != "last" && a.frames != "all")
+    throw InputError("--frames", 0, "expected 'last' or 'all', got '" + a.frames + "'");
+}
+
+Trace load_input(const RenderArgs& a, const Params& params) {
+  if (!fs::exists(a.input)) throw InputError(a.input, 0, "no such file");
+  std::optional<TraceLevel> level;
+  if (!a.level.empty()) level = parse_level(a.level, "--level", 0);
+  if (!level && !has_trace_header(a.input)) {
+    const std::string ext = fs::path(a.input).extension().string();
+    if (ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".off" || ext == ".json")
+      throw InputError(a.input, 0, "model and scene files need the front end, which is not built yet");
+  }
+  Trace trace = read_trace(a.input, level, params);
+  if (a.aa) {
+    if (*a.aa < 0) throw InputError("--aa", 0, "Q must be >= 0");
+    for (TraceFrame& f : trace.frames) {
+      f.settings.q = *a.aa;
+      f.settings.q_line = 0;
+      for (DdaParams& d : f.dda) d.q = *a.aa;
+    }
+  }
+  return trace;
+}
+
+}  // namespace
+
+int run_render(const RenderArgs& a) {
+  reject_unbuilt_options(a);
+  const Params params = load_params(a.config);
+  auto backend = make_backend(a.backend, params);
+  if (a.aa && !is_hardware_q(*a.aa) && a.backend != "reference")
+    throw InputError("--aa", 0, "Q must be 0 or a power of two 1/16..8 for the hardware back ends");
+  const Trace trace = load_input(a, params);
+
+  RenderOptions opt;
+  opt.keep_all_frames = a.frames == "all";
+  if (!a.dump.empty()) opt.dump = parse_dump(a.dump);
+  opt.progress = isatty(STDERR_FILENO);
+  const RenderOutput out = render_trace(trace, *backend, params, opt);
+
+  ReportContext ctx;
+  ctx.backend = backend->name();
+  ctx.input = a.input;
+  ctx.level = level_name(trace.level);
+  ctx.not_modeled = backend->not_modeled();
+  ctx.image_sha256 = sha256_hex(out.shown.rgb);
+  const nlohmann::json report = make_report(ctx, out.stats, params);
+
+  const std::string dir = a.out_dir.empty() ? "out/" + fs::path(a.input).stem().string() : a.out_dir;
+  OutputSet files(dir);
+  files.add("frame.png", [&](const std::string& p) { write_png_rgb(p, out.shown); });
+  for (size_t i = 0; i < out.per_frame.size(); ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%03zu.png", i);
+    files.add(name, [&, i](const std::string& p) { write_png_rgb(p, out.per_frame[i]); });
+  }
+  if (a.z_png)
+    files.add("z.png", [&](const std::string& p) { write_png_gray16(p, out.shown.width, out.shown.height, out.z); });
+  files.add_text("report.json", report.dump(2) + "\n");
+  files.add_text("report.md", report_markdown(report));
+  files.commit();
+
+  if (!a.quiet) {
+    const RunStats& s = out.stats;
+    std::printf("girtd render: %s on the %s back end, %llu frame(s)\n", a.input.c_str(), ctx.backend.c_str(),
+                static_cast<unsigned long long>(s.frames));
+    std::printf("  triangles  %llu in, %llu drawn\n", static_cast<unsigned long long>(s.triangles_in),
+                static_cast<unsigned long long>(s.triangles_drawn));
+    std::printf("  pixels     %llu generated: %llu written, %llu blended, %llu z-rejected, %llu dropped\n",
+                static_cast<unsigned long long>(s.pixels_generated), static_cast<unsigned long long>(s.had.written),
+                static_cast<unsigned long long>(s.had.blended), static_cast<unsigned long long>(s.had.z_rejected),
+                static_cast<unsigned long long>(s.had.dropped));
+    if (s.dda)
+      std::printf("  DDA        %llu clocks, efficiency %.1f %%, %.2f Mpixel/s DDA-bound at %.0f ns\n",
+                  static_cast<unsigned long long>(s.dda->cycles), 100.0 * report["dda_efficiency"].get<double>(),
+                  report["dda_bound_mpixels_per_s"].get<double>(), params.dda_clock_ns);
+    std::printf("  wall       %.3f s\n", s.wall_s);
+    std::printf("  image      %s\n  report     %s\n", files.path("frame.png").c_str(),
+                files.path("report.json").c_str());
+    if (opt.dump) std::printf("  dump       %s\n", opt.dump->path.c_str());
+  }
+  return 0;
+}
+
+}  // namespace girtd

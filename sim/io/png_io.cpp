@@ -1,0 +1,57 @@
+#include "io/png_io.hpp"
+
+#include <png.h>
+
+#include <cstring>
+
+#include "common/input_error.hpp"
+
+namespace girtd {
+namespace {
+
+void write_image(const std::string& path, png_image& image, const void* data, int row_stride) {
+  if (!png_image_write_to_file(&image, path.c_str(), 0, data, row_stride, nullptr))
+    throw InputError(path, 0, std::string("cannot write PNG: ") + image.message);
+}
+
+}  // namespace
+
+void write_png_rgb(const std::string& path, const RgbImage& img) {
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = img.width;
+  image.height = img.height;
+  image.format = PNG_FORMAT_RGB;
+  write_image(path, image, img.rgb.data(), 0);
+}
+
+void write_png_gray16(const std::string& path, int width, int height, const std::vector<uint16_t>& values) {
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = width;
+  image.height = height;
+  image.format = PNG_FORMAT_LINEAR_Y;  // 16-bit grey
+  write_image(path, image, values.data(), 0);
+}
+
+RgbImage read_png_rgb(const std::string& path) {
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&image, path.c_str()))
+    throw InputError(path, 0, std::string("cannot read PNG: ") + image.message);
+  image.format = PNG_FORMAT_RGB;
+  RgbImage out;
+  out.width = static_cast<int>(image.width);
+  out.height = static_cast<int>(image.height);
+  out.rgb.resize(PNG_IMAGE_SIZE(image));
+  if (!png_image_finish_read(&image, nullptr, out.rgb.data(), 0, nullptr)) {
+    png_image_free(&image);
+    throw InputError(path, 0, std::string("cannot decode PNG: ") + image.message);
+  }
+  return out;
+}
+
+}  // namespace girtd

@@ -1,0 +1,20 @@
+// PNG through libpng's simplified API: 8-bit RGB or 16-bit grey.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace girtd {
+
+struct RgbImage {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;  // row-major, 3 bytes per pixel
+};
+
+// Throws InputError(path, 0, ...) when the file cannot be written or read.
+void write_png_rgb(const std::string& path, const RgbImage& img);
+void write_png_gray16(const std::string& path, int width, int height, const std::vector<uint16_t>& values);
+RgbImage read_png_rgb(const std::string& path);
+
+}  // namespace girtd

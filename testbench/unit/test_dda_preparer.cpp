@@ -1,0 +1,116 @@
+// The preparer against hand-worked derivatives, edge equations, limits and
+// start points (§3, 4.3.3). D has 12 fraction bits, colour 9.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "dda/dda_preparer.hpp"
+
+namespace girtd {
+namespace {
+
+Triangle tri(std::array<std::array<double, 3>, 3> xyr) {
+  Triangle t;
+  for (int i = 0; i < 3; ++i) {
+    t.v[i].x = xyr[i][0];
+    t.v[i].y = xyr[i][1];
+    t.v[i].r = xyr[i][2];
+    t.v[i].z = 500;
+  }
+  return t;
+}
+
+FrameSettings frame(double q, Window w = {}) {
+  FrameSettings f;
+  f.q = q;
+  f.window = w;
+  return f;
+}
+
+}  // namespace
+
+// (0,0) R=0, (10,0) R=100, (0,20) R=40. Thesis formula, vertices as given:
+// P'x = (100*20 - 40*0) / (10*20 - 0*0) = 10, P'y = (40*10 - 100*0) / 200 = 2.
+TEST_CASE("preparer: colour derivatives by the thesis formula", "[preparer]") {
+  const Params p = Params::defaults();
+  DdaPreparer prep(p);
+  DdaParams d;
+  REQUIRE(prep.prepare(tri({{{0, 0, 0}, {10, 0, 100}, {0, 20, 40}}}), frame(0), d) == PrepareResult::kReady);
+  CHECK(d.ep[kEpR].dx == 10 * 512);
+  CHECK(d.ep[kEpR].dy == 2 * 512);
+  CHECK(d.ep[kEpR].v == 0);  // start at the window corner (0,0), which is a vertex
+  CHECK(d.ep[kEpT].v == 256 * 512);  // opaque: T = 1.0 on the 0..256 scale
+  CHECK(d.ep[kEpZ].v == 500 * 256);
+  CHECK(d.ep[kEpZ].dx == 0);
+}
+
+// Same triangle. Counter-clockwise on the y-down screen it is (0,0) (0,20) (10,0):
+// edge (0,0)->(0,20): A = 20, B = 0 -> D = x; edge (0,20)->(10,0): A = -20,
+// B = -10, C = 200, L = sqrt(500) -> D = (200 - 20x - 10y)/22.3607;
+// edge (10,0)->(0,0): A = 0, B = 10 -> D = y.
+TEST_CASE("preparer: edge distances and winding", "[preparer]") {
+  const Params p = Params::defaults();
+  DdaPreparer prep(p);
+  DdaParams cw, ccw;
+  REQUIRE(prep.prepare(tri({{{0, 0, 0}, {10, 0, 100}, {0, 20, 40}}}), frame(0), cw) == PrepareResult::kReady);
+  REQUIRE(prep.prepare(tri({{{0, 0, 0}, {0, 20, 40}, {10, 0, 100}}}), frame(0), ccw) == PrepareResult::kReady);
+  CHECK(cw == ccw);  // the preparer reorders the clockwise one
+  CHECK(cw.ep[kEpD1] == EpInit{0, 4096, 0});  // D = x
+  // 200/sqrt(500) = 8.944272 -> 36635.74 -> 36636; -20/sqrt(500) = -0.894427 ->
+  // -3663.57 -> -3664; -10/sqrt(500) = -0.447214 -> -1831.79 -> -1832.
+  CHECK(cw.ep[kEpD2] == EpInit{36636, -3664, -1832});
+  CHECK(cw.ep[kEpD3] == EpInit{0, 0, 4096});  // D = y
+  CHECK(cw.xmin == 0);
+  CHECK(cw.xmax == 10);
+  CHECK(cw.ymax == 20);
+}
+
+TEST_CASE("preparer: limits widen by Q and the start is the top vertex", "[preparer]") {
+  const Params p = Params::defaults();
+  DdaPreparer prep(p);
+  DdaParams d;
+  REQUIRE(prep.prepare(tri({{{100.4, 50.6, 0}, {80, 90, 0}, {120, 90, 0}}}), frame(1), d) ==
+          PrepareResult::kReady);
+  CHECK(d.y0 == 50);    // ceil(50.6 - 1)
+  CHECK(d.x0 == 100);   // floor(100.4 + 0.5)
+  CHECK(d.xmin == 79);  // ceil(80 - 1)
+  CHECK(d.xmax == 121); // floor(120 + 1)
+  CHECK(d.ymax == 91);  // floor(90 + 1)
+}
+
+TEST_CASE("preparer: start at the window corner when it is inside the triangle", "[preparer]") {
+  const Params p = Params::defaults();
+  DdaPreparer prep(p);
+  DdaParams d;
+  const Window w{5, 5, 100, 100};
+  // (5,5): x = 5 >= 0, y = 5 >= 0, (200 - 100 - 50)/22.36 > 0: inside.
+  REQUIRE(prep.prepare(tri({{{0, 0, 0}, {10, 0, 100}, {0, 20, 40}}}), frame(0, w), d) == PrepareResult::kReady);
+  CHECK(d.x0 == 5);
+  CHECK(d.y0 == 5);
+  CHECK(d.ep[kEpR].v == (10 * 5 + 2 * 5) * 512);  // R(5,5) = 60
+  CHECK(d.xmin == 5);
+}
+
+TEST_CASE("preparer: start at the leftmost crossing of the top border", "[preparer]") {
+  const Params p = Params::defaults();
+  DdaPreparer prep(p);
+  DdaParams d;
+  // Apex (100,-50) above the screen; the edges cross y = 0 at x = 100 - 50/3 =
+  // 83.33 and 116.67: equal y, the smaller x wins.
+  REQUIRE(prep.prepare(tri({{{100, -50, 0}, {50, 100, 0}, {150, 100, 0}}}), frame(0), d) == PrepareResult::kReady);
+  CHECK(d.y0 == 0);
+  CHECK(d.x0 == 83);
+}
+
+TEST_CASE("preparer: discards triangles with no area or outside the window", "[preparer]") {
+  const Params p = Params::defaults();
+  DdaPreparer prep(p);
+  DdaParams d;
+  CHECK(prep.prepare(tri({{{0, 0, 0}, {10, 10, 0}, {20, 20, 0}}}), frame(1), d) == PrepareResult::kDegenerate);
+  CHECK(prep.prepare(tri({{{0, 0, 0}, {10, 0, 0}, {0, 10, 0}}}), frame(1, Window{50, 50, 60, 60}), d) ==
+        PrepareResult::kOffWindow);
+  CHECK(prep.counts().degenerate == 1);
+  CHECK(prep.counts().off_window == 1);
+}
+
+}  // namespace girtd
