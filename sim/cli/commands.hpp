@@ -2,6 +2,7 @@
 // 0 success, 1 a check failed, 2 bad input or usage (InputError).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,6 +27,15 @@ struct RenderArgs {
 int run_render(const RenderArgs& a);
 int run_claims(const std::string& config);
 int run_bench(const std::string& config, const std::string& out_dir);
-int run_regress(const std::vector<std::string>& traces);
+struct RegressArgs {
+  std::vector<std::string> traces;  // empty: every trace under traces/
+  int random = 0;                   // extra random triangles
+  uint32_t seed = 1;
+  double stall = 0.3;               // back-pressure probability on every other triangle
+  bool both_compare_modes = false;  // run ECL and TTL sequencing
+  std::string config;
+};
+
+int run_regress(const RegressArgs& a);
 
 }  // namespace girtd

@@ -37,9 +37,14 @@ int main(int argc, char** argv) {
   bench->add_option("--config", bench_config, "JSON file merged over config/girtd.json");
   bench->add_option("--out", bench_out, "output directory")->capture_default_str();
 
-  std::vector<std::string> regress_traces;
+  RegressArgs rg;
   CLI::App* regress = app.add_subcommand("regress", "RTL against the golden model, trace by trace");
-  regress->add_option("traces", regress_traces, "traces (default: every trace in traces/)");
+  regress->add_option("traces", rg.traces, "traces (default: every trace in traces/)");
+  regress->add_option("--random", rg.random, "also N random triangles");
+  regress->add_option("--seed", rg.seed, "seed of the random triangles")->capture_default_str();
+  regress->add_option("--stall", rg.stall, "back-pressure probability on every other triangle")->capture_default_str();
+  regress->add_flag("--both-compare-modes", rg.both_compare_modes, "run same-cycle and pipelined X/Y compare");
+  regress->add_option("--config", rg.config, "JSON file merged over config/girtd.json");
 
   try {
     app.parse(argc, argv);
@@ -54,7 +59,7 @@ int main(int argc, char** argv) {
     if (*render) return run_render(ra);
     if (*claims) return run_claims(claims_config);
     if (*bench) return run_bench(bench_config, bench_out);
-    if (*regress) return run_regress(regress_traces);
+    if (*regress) return run_regress(rg);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.formatted().c_str());
     return 2;

@@ -1,0 +1,29 @@
+// Norm_Q of one edge distance (4.2.5) for Q = 0 or Q = 2^k: inside when
+// D > -Q (D >= 0 for Q = 0); in the fringe n = (D + Q) shifted onto NF
+// fraction bits, truncating; 1.0 = 2^NF for D >= 0.
+module dda_norm #(
+    parameter int W = 24,
+    parameter int FRAC = 12,
+    parameter int NF = 8
+) (
+    input  logic signed [W-1:0] d_i,
+    input  logic                q_zero_i,
+    input  logic signed [3:0]   q_k_i,    // Q = 2^k, k = -4..3
+    output logic                inside_o,
+    output logic [NF:0]         n_o
+);
+  logic signed [W:0] q_raw, sum;
+  logic signed [5:0] shift;  // FRAC + k - NF
+
+  assign q_raw = (W + 1)'(1) <<< (FRAC + int'(q_k_i));
+  assign sum = {d_i[W-1], d_i} + q_raw;
+  assign shift = 6'(FRAC - NF) + 6'(q_k_i);
+
+  always_comb begin
+    inside_o = q_zero_i ? !d_i[W-1] : (!sum[W] && sum != '0);
+    if (!d_i[W-1]) n_o = (NF + 1)'(1) << NF;
+    else if (!inside_o) n_o = '0;
+    else if (shift >= 0) n_o = (NF + 1)'(sum >>> shift);
+    else n_o = (NF + 1)'(sum <<< (-shift));
+  end
+endmodule
