@@ -13,9 +13,11 @@ module dda_norm #(
     output logic [NF:0]         n_o
 );
   logic signed [W:0] q_raw, sum;
-  logic signed [5:0] shift;  // FRAC + k - NF
+  logic signed [5:0] q_shift;  // FRAC + k: Q as a raw D value is 1 << q_shift
+  logic signed [5:0] shift;    // FRAC + k - NF
 
-  assign q_raw = (W + 1)'(1) <<< (FRAC + int'(q_k_i));
+  assign q_shift = 6'(FRAC) + 6'(q_k_i);
+  assign q_raw = (W + 1)'(1) << q_shift;
   assign sum = {d_i[W-1], d_i} + q_raw;
   assign shift = 6'(FRAC - NF) + 6'(q_k_i);
 

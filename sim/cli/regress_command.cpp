@@ -1,146 +1,21 @@
 // girtd regress: the RTL DDA against the golden model, trace by trace and on
-// random triangles. For each primitive the pixel streams (values and clocks)
-// and clock counts must agree; for each frame, the picture the golden HAD
-// builds from either stream. One row per trace, then "N passed, N failed".
+// random triangles (sim/rtl/dda_regression). One row per trace, then
+// "N passed, N failed"; exit 1 on any mismatch.
 #include <cstdio>
-#include <filesystem>
-#include <random>
 
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
-#include "common/input_error.hpp"
-#include "common/triangle_setup.hpp"
-#include "dda/dda_preparer.hpp"
-#include "had/had.hpp"
-#include "io/trace_reader.hpp"
-#include "rtl/dda_compare.hpp"
-#include "workloads/random_triangles.hpp"
+#include "rtl/dda_regression.hpp"
 
 namespace girtd {
-namespace fs = std::filesystem;
-
-namespace {
-
-struct Row {
-  std::string name;
-  uint64_t triangles = 0, pixels = 0, clocks = 0, stalls = 0;
-  std::string failure;
-};
-
-// Runs golden and RTL side by side over one frame's parameter sets.
-class FrameChecker {
- public:
-  FrameChecker(const Params& p, DdaRtl& rtl, double stall, uint32_t seed)
-      : params_(p), golden_(p), rtl_(rtl), stall_(stall), seed_(seed),
-        fb_golden_(p.screen_width, p.screen_height, uint16_t(p.depth_clear)),
-        fb_rtl_(p.screen_width, p.screen_height, uint16_t(p.depth_clear)),
-        had_golden_(fb_golden_, p.one_minus_nf), had_rtl_(fb_rtl_, p.one_minus_nf) {}
-
-  void begin_frame(Rgb background) {
-    fb_golden_.clear_back(background);
-    fb_rtl_.clear_back(background);
-  }
-
-  void check(const DdaParams& d, Row& row) {
-    if (!row.failure.empty()) return;
-    DdaRtlOptions opt;
-    opt.seed = seed_ + uint32_t(row.triangles);
-    opt.stall_probability = (row.triangles % 2) ? stall_ : 0.0;  // back-pressure on every other triangle
-    const DdaComparison c = compare_dda(golden_, rtl_, d, opt);
-    ++row.triangles;
-    row.pixels += c.golden.emitted;
-    row.clocks += c.golden.cycles;
-    row.stalls += c.rtl.stall_cycles;
-    if (!c.match) {
-      row.failure = "triangle " + std::to_string(row.triangles - 1) +
-                    (d.source_line ? " (line " + std::to_string(d.source_line) + ")" : "") + ": " +
-                    c.first_difference;
-      return;
-    }
-    for (const Pixel& p : c.golden_pixels) had_golden_.update(p);
-    for (const Pixel& p : c.rtl_pixels) had_rtl_.update(p);
-  }
-
-  void end_frame(Row& row) {
-    if (!row.failure.empty()) return;
-    if (fb_golden_.shown_bytes() != fb_rtl_.shown_bytes() || fb_golden_.z_plane() != fb_rtl_.z_plane()) {
-      row.failure = "frame buffers differ";
-    }
-    fb_golden_.swap();
-    fb_rtl_.swap();
-  }
-
- private:
-  const Params& params_;
-  DdaEngine golden_;
-  DdaRtl& rtl_;
-  double stall_;
-  uint32_t seed_;
-  FrameBuffer fb_golden_, fb_rtl_;
-  Had had_golden_, had_rtl_;
-};
-
-std::vector<std::string> default_traces() {
-  std::vector<std::string> out;
-  if (!fs::is_directory("traces")) throw InputError("traces", 0, "no traces/ here: run from the repository root or name traces");
-  for (const auto& e : fs::recursive_directory_iterator("traces"))
-    if (e.is_regular_file() && (e.path().extension() == ".trace" || e.path().extension() == ".dda") &&
-        has_trace_header(e.path().string()))
-      out.push_back(e.path().string());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-Row regress_trace(const std::string& path, const Params& p, DdaRtl& rtl, double stall) {
-  Row row;
-  row.name = path;
-  const Trace trace = read_trace(path, std::nullopt, p);
-  for (const TraceFrame& f : trace.frames)
-    if (!is_hardware_q(f.settings.q))
-      throw InputError(path, f.settings.q_line, "Q must be 0 or a power of two 1/16..8 for the RTL");
-  FrameChecker checker(p, rtl, stall, 1);
-  DdaPreparer prep(p);
-  for (const TraceFrame& f : trace.frames) {
-    checker.begin_frame(f.settings.background);
-    DdaParams d;
-    for (const Triangle& t : f.triangles)
-      if (prep.prepare(t, f.settings, d) == PrepareResult::kReady) checker.check(d, row);
-    for (const DdaParams& dd : f.dda) checker.check(dd, row);
-    checker.end_frame(row);
-  }
-  return row;
-}
-
-Row regress_random(int count, uint32_t seed, const Params& p, DdaRtl& rtl, double stall) {
-  Row row;
-  row.name = "random " + std::to_string(count) + " (seed " + std::to_string(seed) + ")";
-  std::mt19937 rng(seed);
-  const double qs[5] = {0, 0.5, 1, 1, 2};
-  FrameChecker checker(p, rtl, stall, seed);
-  DdaPreparer prep(p);
-  checker.begin_frame(Rgb{});
-  for (int n = 0; n < count && row.failure.empty(); ++n) {
-    FrameSettings f;
-    f.q = qs[rng() % 5];
-    // Mostly small and medium triangles, as scenes have; the log-uniform size reaches the full screen.
-    const Triangle t = random_triangle(rng, n % 10 == 0 ? 1024 : 64);
-    DdaParams d;
-    if (prep.prepare(t, f, d) == PrepareResult::kReady) checker.check(d, row);
-  }
-  checker.end_frame(row);
-  return row;
-}
-
-}  // namespace
 
 int run_regress(const RegressArgs& a) {
   Params p = load_params(a.config);
-  std::vector<Row> rows;
   std::vector<std::string> traces = a.traces;
-  if (traces.empty() && a.random == 0) traces = default_traces();
+  if (traces.empty() && a.random == 0) traces = traces_under("traces");
   std::printf("%-44s %9s %10s %11s %9s  %s\n", "trace", "triangles", "pixels", "DDA clocks", "stalls", "result");
   int passed = 0, failed = 0;
-  auto report = [&](const Row& r) {
+  auto report = [&](const RegressionRow& r) {
     std::printf("%-44s %9llu %10llu %11llu %9llu  %s\n", r.name.c_str(), (unsigned long long)r.triangles,
                 (unsigned long long)r.pixels, (unsigned long long)r.clocks, (unsigned long long)r.stalls,
                 r.failure.empty() ? "pass" : "FAIL");
@@ -148,7 +23,9 @@ int run_regress(const RegressArgs& a) {
     std::fflush(stdout);
     (r.failure.empty() ? passed : failed)++;
   };
-  for (bool pipelined : a.both_compare_modes ? std::vector<bool>{false, true} : std::vector<bool>{p.xy_compare_pipelined}) {
+  const std::vector<bool> modes = a.both_compare_modes ? std::vector<bool>{false, true}
+                                                       : std::vector<bool>{p.xy_compare_pipelined};
+  for (bool pipelined : modes) {
     p.xy_compare_pipelined = pipelined;
     DdaRtl rtl(p);
     for (const std::string& t : traces) report(regress_trace(t, p, rtl, a.stall));

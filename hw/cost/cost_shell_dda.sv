@@ -1,0 +1,40 @@
+// Measurement shell, not part of GIRTD: the whole DDA behind a serial input
+// register chain and an XOR-folded output register, so an iCE40 flow can
+// place it with a handful of pins and time its internal paths.
+module cost_shell_dda (
+    input  logic clk_i,
+    input  logic rst_ni,
+    input  logic serial_i,
+    output logic serial_o
+);
+  localparam int XY = girtd_pkg::XY_W, C = girtd_pkg::COLOR_W, T = girtd_pkg::T_W, Z = girtd_pkg::Z_W,
+                 D = girtd_pkg::D_W;
+  localparam int N = 5 * XY + 1 + 4 + 9 * C + 3 * T + 3 * Z + 9 * D + 4;
+  logic [N-1:0] sr_q;
+  always_ff @(posedge clk_i) sr_q <= {sr_q[N-2:0], serial_i};
+
+  logic out_valid, in_ready, active, stall;
+  logic [9:0] ox, oy;
+  logic [7:0] orr, og, ob;
+  logic [8:0] onf;
+  logic [15:0] oz;
+  logic [3:0] state;
+  dda u_dda (
+      .clk_i, .rst_ni, .walk_fix_i(sr_q[0]), .pipelined_compare_i(sr_q[1]), .in_valid_i(sr_q[2]),
+      .in_ready_o(in_ready), .x0_i(sr_q[3+:XY]), .y0_i(sr_q[3+XY+:XY]), .xmin_i(sr_q[3+2*XY+:XY]),
+      .xmax_i(sr_q[3+3*XY+:XY]), .ymax_i(sr_q[3+4*XY+:XY]), .q_zero_i(sr_q[3+5*XY]), .q_k_i(sr_q[4+5*XY+:4]),
+      .r_i(sr_q[8+5*XY+:C]), .r_dx_i(sr_q[8+5*XY+C+:C]), .r_dy_i(sr_q[8+5*XY+2*C+:C]),
+      .g_i(sr_q[8+5*XY+3*C+:C]), .g_dx_i(sr_q[8+5*XY+4*C+:C]), .g_dy_i(sr_q[8+5*XY+5*C+:C]),
+      .b_i(sr_q[8+5*XY+6*C+:C]), .b_dx_i(sr_q[8+5*XY+7*C+:C]), .b_dy_i(sr_q[8+5*XY+8*C+:C]),
+      .t_i(sr_q[8+5*XY+9*C+:T]), .t_dx_i(sr_q[8+5*XY+9*C+T+:T]), .t_dy_i(sr_q[8+5*XY+9*C+2*T+:T]),
+      .z_i(sr_q[8+5*XY+9*C+3*T+:Z]), .z_dx_i(sr_q[8+5*XY+9*C+3*T+Z+:Z]), .z_dy_i(sr_q[8+5*XY+9*C+3*T+2*Z+:Z]),
+      .d1_i(sr_q[8+5*XY+9*C+3*T+3*Z+:D]), .d1_dx_i(sr_q[8+5*XY+9*C+3*T+3*Z+D+:D]),
+      .d1_dy_i(sr_q[8+5*XY+9*C+3*T+3*Z+2*D+:D]), .d2_i(sr_q[8+5*XY+9*C+3*T+3*Z+3*D+:D]),
+      .d2_dx_i(sr_q[8+5*XY+9*C+3*T+3*Z+4*D+:D]), .d2_dy_i(sr_q[8+5*XY+9*C+3*T+3*Z+5*D+:D]),
+      .d3_i(sr_q[8+5*XY+9*C+3*T+3*Z+6*D+:D]), .d3_dx_i(sr_q[8+5*XY+9*C+3*T+3*Z+7*D+:D]),
+      .d3_dy_i(sr_q[8+5*XY+9*C+3*T+3*Z+8*D+:D]),
+      .out_valid_o(out_valid), .out_ready_i(sr_q[N-1]), .out_x_o(ox), .out_y_o(oy), .out_r_o(orr),
+      .out_g_o(og), .out_b_o(ob), .out_nf_o(onf), .out_z_o(oz), .active_o(active), .stall_o(stall),
+      .state_o(state));
+  always_ff @(posedge clk_i) serial_o <= ^{out_valid, in_ready, active, stall, ox, oy, orr, og, ob, onf, oz, state};
+endmodule

@@ -1,0 +1,29 @@
+// Golden-vs-RTL regression of the DDA over traces and random triangles:
+// per primitive the pixel streams (values and clocks) and clock counts, per
+// frame the pictures the golden HAD builds from either stream. Shared by
+// `girtd regress` and the check-build harness in testbench/rtl.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "config/params.hpp"
+#include "rtl/dda_rtl.hpp"
+
+namespace girtd {
+
+struct RegressionRow {
+  std::string name;
+  uint64_t triangles = 0, pixels = 0, clocks = 0, stalls = 0;
+  std::string failure;  // empty: passed
+};
+
+// `stall` is the back-pressure probability applied to every other triangle.
+RegressionRow regress_trace(const std::string& path, const Params& p, DdaRtl& rtl, double stall);
+RegressionRow regress_random(int count, uint32_t seed, const Params& p, DdaRtl& rtl, double stall);
+
+// Every trace file under `dir` (recursively) with a girtd-trace header, sorted.
+std::vector<std::string> traces_under(const std::string& dir);
+
+}  // namespace girtd
