@@ -36,6 +36,7 @@ struct FrameSettings {
   Rgb background;
   double q = 1.0;  // antialiasing width Q (0 = off)
   int q_line = 0;  // trace line that set q (for error messages)
+  bool qq = false;  // thesis program's QQ switch: antialiasing off, nf < 1 dropped
 };
 
 // nf is 1.8 fixed point: 256 = 1.0.

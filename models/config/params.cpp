@@ -75,6 +75,14 @@ Params build(const json& j, const std::string& origin) {
     p.fifo_dda_had_depth = j.at("fifo").at("dda_had_depth").get<int>();
     p.depth_clear = j.at("depth").at("clear").get<int>();
     p.depth_max_mapped = j.at("depth").at("max_mapped").get<int>();
+    const json& th = j.at("thesis");
+    p.thesis.kc = th.at("kc").get<double>();
+    p.thesis.width = th.at("width").get<int>();
+    p.thesis.height = th.at("height").get<int>();
+    p.thesis.ep_color = format_of(th.at("ep").at("color"), true);
+    p.thesis.ep_t = format_of(th.at("ep").at("t"), true);
+    p.thesis.ep_z = format_of(th.at("ep").at("z"), true);
+    p.thesis.ep_d = format_of(th.at("ep").at("d"), false);
     p.target_mpixels_per_s = j.at("targets").at("mpixels_per_s").get<double>();
     p.stage_flops_per_s = j.at("targets").at("stage_flops_per_s").get<double>();
   } catch (const json::exception& e) {
@@ -111,6 +119,15 @@ Params Params::with_overrides(const json& override_json, const std::string& orig
   if (!override_json.is_object()) throw InputError(origin, 0, "a configuration must be a JSON object");
   merge_strict(merged, override_json, "", origin);
   return build(merged, origin);
+}
+
+Params Params::with_thesis_formats() const {
+  Params t = *this;
+  t.ep_color = thesis.ep_color;
+  t.ep_t = thesis.ep_t;
+  t.ep_z = thesis.ep_z;
+  t.ep_d = thesis.ep_d;
+  return t;
 }
 
 Params Params::from_file(const std::string& path) {

@@ -13,6 +13,15 @@ namespace girtd {
 
 enum class OneMinusNf { kExact, kInvertBits };
 
+// The thesis appendix's validation program (GIRTD.md §11): its screen and
+// its 32-bit register formats, on the same scales as the hardware EPs
+// (colour 0..255, T 0..256, Z 0..65535, D in pixels).
+struct ThesisParams {
+  double kc;       // screen map x = KC (1 + xp), y = KC (0.75 - yp)
+  int width, height;
+  FixFormat ep_color, ep_t, ep_z, ep_d;
+};
+
 struct Params {
   int screen_width;
   int screen_height;
@@ -39,6 +48,8 @@ struct Params {
   int depth_clear;
   int depth_max_mapped;
 
+  ThesisParams thesis;
+
   double target_mpixels_per_s;
   double stage_flops_per_s;
 
@@ -50,6 +61,10 @@ struct Params {
   // and wrong types raise InputError naming `origin`.
   static Params with_overrides(const nlohmann::json& override_json, const std::string& origin);
   static Params from_file(const std::string& path);
+
+  // These parameters with the thesis program's formats in place of the
+  // hardware EPs' (the DDA datapath then is the program's 32-bit registers).
+  Params with_thesis_formats() const;
 };
 
 }  // namespace girtd

@@ -3,73 +3,32 @@
 #include <stdexcept>
 
 #include "common/fixed_point.hpp"
+#include "dda/dda_datapath.hpp"
 #include "dda/nf_unit.hpp"
 
 namespace girtd {
-namespace {
-
-// The DDA's registers: X, Y counters and 8 adder EPs, each with an AUX copy.
-struct Registers {
-  int x = 0, y = 0;
-  std::array<int64_t, kEpCount> v{};
-};
-
-class Datapath {
- public:
-  Datapath(const Params& p, const DdaParams& in) : in_(in), xy_bits_(p.xy_bits) {
-    for (int i = 0; i < kEpCount; ++i) fmt_[i] = &p.ep_d;
-    fmt_[kEpR] = fmt_[kEpG] = fmt_[kEpB] = &p.ep_color;
-    fmt_[kEpT] = &p.ep_t;
-    fmt_[kEpZ] = &p.ep_z;
-    pix_.x = in.x0;
-    pix_.y = in.y0;
-    for (int i = 0; i < kEpCount; ++i) pix_.v[i] = wrap(in.ep[i].v, *fmt_[i]);
-  }
-
-  void step_x(int s) {
-    pix_.x = static_cast<int>(wrap_to_bits(pix_.x + s, xy_bits_));
-    for (int i = 0; i < kEpCount; ++i) pix_.v[i] = wrap(pix_.v[i] + s * in_.ep[i].dx, *fmt_[i]);
-  }
-  void step_y() {
-    pix_.y = static_cast<int>(wrap_to_bits(pix_.y + 1, xy_bits_));
-    for (int i = 0; i < kEpCount; ++i) pix_.v[i] = wrap(pix_.v[i] + in_.ep[i].dy, *fmt_[i]);
-  }
-  void save() { aux_ = pix_; }
-  void restore() { pix_ = aux_; }
-
-  const Registers& pix() const { return pix_; }
-  const FixFormat& format(int ep) const { return *fmt_[ep]; }
-
- private:
-  const DdaParams& in_;
-  int xy_bits_;
-  const FixFormat* fmt_[kEpCount];
-  Registers pix_, aux_;
-};
-
-}  // namespace
 
 DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const ClockProbe& probe) const {
-  Datapath dp(params_, in);
+  DdaDatapath dp(params_, in);
   const NormUnit norm(params_.ep_d, params_.norm_frac_bits, in.q);
   const bool fix = params_.walk_fix;
   const bool pipelined_compare = params_.xy_compare_pipelined;
 
-  auto d_inside = [&](const Registers& r) {
+  auto d_inside = [&](const DdaRegisters& r) {
     return norm.inside(r.v[kEpD1]) && norm.inside(r.v[kEpD2]) && norm.inside(r.v[kEpD3]);
   };
-  auto in_limits = [&](const Registers& r) { return r.x >= in.xmin && r.x <= in.xmax; };
-  auto inside = [&](const Registers& r) { return in_limits(r) && d_inside(r); };
+  auto in_limits = [&](const DdaRegisters& r) { return r.x >= in.xmin && r.x <= in.xmax; };
+  auto inside = [&](const DdaRegisters& r) { return in_limits(r) && d_inside(r); };
   // DIR (§4.2.4): the sign of D'x of the first edge whose Norm is 0; +1 = right.
   // 0 = no horizontal way in (the edge is horizontal).
-  auto dir = [&](const Registers& r) -> int {
+  auto dir = [&](const DdaRegisters& r) -> int {
     if (r.x < in.xmin) return +1;
     if (r.x > in.xmax) return -1;
     for (int e = kEpD1; e <= kEpD3; ++e)
       if (!norm.inside(r.v[e])) return in.ep[e].dx < 0 ? -1 : (in.ep[e].dx > 0 || !fix ? +1 : 0);
     return +1;
   };
-  auto can_step = [&](const Registers& r, int s) { return s > 0 ? r.x < in.xmax : r.x > in.xmin; };
+  auto can_step = [&](const DdaRegisters& r, int s) { return s > 0 ? r.x < in.xmax : r.x > in.xmin; };
 
   DdaRunStats st;
   DdaState state = DdaState::kCheck, after_wait = DdaState::kCheck;
@@ -86,7 +45,7 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
   const uint64_t clock_bound = (3 * width + 16) * rows + 16;
 
   for (;;) {
-    const Registers r = dp.pix();  // this clock's pixel, before the clock's op
+    const DdaRegisters r = dp.pix();  // this clock's pixel, before the clock's op
     const DdaState now = state;
     bool emit = false, done = false;
     auto emit_here = [&] {

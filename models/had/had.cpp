@@ -10,7 +10,7 @@ uint8_t blend_channel(uint8_t c, uint8_t cb, int nf, OneMinusNf rule) {
 
 HadOutcome Had::update(const Pixel& p) {
   // Order as in HadPix: screen test, depth test, then nf.
-  if (!fb_.on_screen(p.x, p.y)) {
+  if (p.x < 0 || p.y < 0 || p.x >= screen_width_ || p.y >= screen_height_) {
     ++counts_.dropped;
     return HadOutcome::kDropped;
   }
@@ -24,6 +24,10 @@ HadOutcome Had::update(const Pixel& p) {
     return HadOutcome::kDropped;
   }
   Rgb& cb = fb_.back_rgb(p.x, p.y);
+  if (p.nf < kNfOne && drop_partial_) {
+    ++counts_.dropped;
+    return HadOutcome::kDropped;
+  }
   if (p.nf >= kNfOne) {
     cb = Rgb{p.r, p.g, p.b};
     zb = p.z;

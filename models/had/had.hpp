@@ -25,7 +25,18 @@ uint8_t blend_channel(uint8_t c, uint8_t cb, int nf, OneMinusNf rule);
 
 class Had {
  public:
-  Had(FrameBuffer& fb, OneMinusNf rule) : fb_(fb), rule_(rule) {}
+  Had(FrameBuffer& fb, OneMinusNf rule)
+      : fb_(fb), rule_(rule), screen_width_(fb.width()), screen_height_(fb.height()) {}
+
+  // The visible screen (pixels outside it are dropped): the whole frame
+  // buffer, or the thesis program's 128 x 96 in its top-left corner.
+  void set_screen(int width, int height) {
+    screen_width_ = width;
+    screen_height_ = height;
+  }
+  // The thesis program's QQ switch: antialiasing off, so every pixel with
+  // nf < 1 is dropped instead of blended.
+  void set_drop_partial(bool drop) { drop_partial_ = drop; }
 
   HadOutcome update(const Pixel& p);
   const HadCounts& counts() const { return counts_; }
@@ -33,6 +44,8 @@ class Had {
  private:
   FrameBuffer& fb_;
   OneMinusNf rule_;
+  int screen_width_, screen_height_;
+  bool drop_partial_ = false;
   HadCounts counts_;
 };
 

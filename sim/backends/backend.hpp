@@ -19,8 +19,9 @@ class Backend {
   virtual std::string name() const = 0;
   // Report keys this back end cannot know (their values are null).
   virtual std::vector<std::string> not_modeled() const = 0;
-  // Throws InputError (naming `origin`) for input this back end cannot take.
-  virtual void check_input(const Trace& trace) const = 0;
+  // Before the first frame: throws InputError for input this back end cannot
+  // take, and sets itself up for the trace's level.
+  virtual void begin(const Trace& trace) = 0;
   virtual void draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) = 0;
   // Per-stage rows for the report, after the last frame.
   virtual void finish(RunStats& stats) const = 0;

@@ -2,6 +2,7 @@
 
 #include "common/input_error.hpp"
 #include "common/triangle_setup.hpp"
+#include "thesis/thesis_preparer.hpp"
 
 namespace girtd {
 
@@ -17,7 +18,9 @@ std::vector<std::string> GoldenBackend::not_modeled() const {
           "cache.page_misses", "cache.nac", "stages.*.busy_s", "stages.*.stall_s"};
 }
 
-void GoldenBackend::check_input(const Trace& trace) const {
+void GoldenBackend::begin(const Trace& trace) {
+  thesis_mode_ = trace.level == TraceLevel::kThesis;
+  if (trace.level == TraceLevel::kThesis) return;  // PIX_INTERNO fixes Q = 1
   for (const TraceFrame& f : trace.frames)
     if (!is_hardware_q(f.settings.q))
       throw InputError(trace.path, f.settings.q_line,
@@ -34,7 +37,25 @@ void GoldenBackend::run_dda(const DdaParams& p, Had& had, RunStats& stats) {
   ++stats.triangles_drawn;
 }
 
+// The thesis appendix's program: prepdda and DDApix in its own formats.
+void GoldenBackend::run_thesis(const Triangle& t, Had& had, RunStats& stats) {
+  ++stats.triangles_in;
+  const auto p = thesis_prepare(t.v, thesis_params_);
+  if (!p) return;
+  const DdaRunStats one = ddapix_.run(*p, [&](const DdaEmit& e) {
+    ++stats.pixels_generated;
+    had.update(e.pixel);
+  });
+  if (!stats.dda) stats.dda = DdaRunStats{};
+  accumulate(*stats.dda, one);
+  ++stats.triangles_drawn;
+}
+
 void GoldenBackend::draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) {
+  if (thesis_mode_) {
+    for (const Triangle& t : frame.triangles) run_thesis(t, had, stats);
+    return;
+  }
   DdaParams p;
   for (const Triangle& t : frame.triangles) {
     ++stats.triangles_in;

@@ -5,22 +5,29 @@
 #include "backends/backend.hpp"
 #include "dda/dda_engine.hpp"
 #include "dda/dda_preparer.hpp"
+#include "thesis/ddapix.hpp"
 
 namespace girtd {
 
 class GoldenBackend : public Backend {
  public:
-  explicit GoldenBackend(const Params& p) : preparer_(p), engine_(p) {}
+  explicit GoldenBackend(const Params& p)
+      : preparer_(p), engine_(p), thesis_params_(p.with_thesis_formats()),
+        ddapix_(thesis_params_, ThesisInside::kProgram) {}
   std::string name() const override { return "golden"; }
   std::vector<std::string> not_modeled() const override;
-  void check_input(const Trace& trace) const override;
+  void begin(const Trace& trace) override;
   void draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) override;
   void finish(RunStats& stats) const override;
 
  private:
   void run_dda(const DdaParams& p, Had& had, RunStats& stats);
+  void run_thesis(const Triangle& t, Had& had, RunStats& stats);
   DdaPreparer preparer_;
   DdaEngine engine_;
+  Params thesis_params_;  // the appendix program's register formats
+  bool thesis_mode_ = false;
+  DdaPix ddapix_;
 };
 
 // Adds one triangle's DDA statistics into a running total.

@@ -10,7 +10,7 @@ std::vector<std::string> ReferenceBackend::not_modeled() const {
           "cache.accesses", "cache.page_misses", "cache.nac", "stages.*.busy_s", "stages.*.stall_s"};
 }
 
-void ReferenceBackend::check_input(const Trace& trace) const {
+void ReferenceBackend::begin(const Trace& trace) {
   if (trace.level != TraceLevel::kTriangle)
     throw InputError(trace.path, 0,
                      "the reference back end needs triangle-level input (a DDA trace holds no float triangles)");

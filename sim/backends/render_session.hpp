@@ -29,6 +29,9 @@ struct RenderOptions {
   bool keep_all_frames = false;
   std::optional<DumpRequest> dump;
   bool progress = false;  // a progress line on stderr for runs longer than a second
+  // The polygon-level trace the rendered one came from (models, scenes), for
+  // --dump polygons=FILE; frames correspond one to one.
+  const Trace* polygon_source = nullptr;
 };
 
 RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& params, const RenderOptions& opt);

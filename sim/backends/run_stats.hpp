@@ -10,6 +10,7 @@
 
 #include "dda/dda_engine.hpp"
 #include "dda/dda_preparer.hpp"
+#include "frontend/frontend_counts.hpp"
 #include "had/had.hpp"
 
 namespace girtd {
@@ -28,6 +29,7 @@ struct RunStats {
   HadCounts had;
   std::optional<PreparerCounts> preparer;
   std::optional<DdaRunStats> dda;  // summed over all triangles
+  std::optional<FrontendCounts> frontend;  // when the input entered above the front end
   std::vector<StageStats> stages;
   double wall_s = 0;
 };

@@ -13,11 +13,11 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   RenderArgs ra;
-  CLI::App* render = app.add_subcommand("render", "render a trace (or, later, a model or scene)");
-  render->add_option("input", ra.input, "trace file (traces/FORMAT.md)")->required();
+  CLI::App* render = app.add_subcommand("render", "render a model (OBJ, PLY, STL, OFF ...), a scene (JSON) or a trace");
+  render->add_option("input", ra.input, "model, scene or trace file (traces/FORMAT.md)")->required();
   render->add_option("--backend", ra.backend, "reference | golden | approx | rtl")->capture_default_str();
   render->add_option("--out", ra.out_dir, "output directory (default out/<input name>/)");
-  render->add_option("--level", ra.level, "level of a headerless trace: triangle | dda");
+  render->add_option("--level", ra.level, "level of a headerless trace: polygon | triangle | dda | thesis");
   render->add_option("--frames", ra.frames, "last | all (one PNG per frame)")->capture_default_str();
   render->add_option("--wave", ra.wave, "waveform file (.fst or .vcd)");
   render->add_option("--wave-window", ra.wave_window, "T0:T1 window of the waveform");

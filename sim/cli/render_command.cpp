@@ -1,6 +1,7 @@
 // girtd render: trace in, frame.png + report.json + report.md out.
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 
@@ -14,6 +15,9 @@
 #include "io/report.hpp"
 #include "io/sha256.hpp"
 #include "io/trace_reader.hpp"
+#include "frontend/front_end_runner.hpp"
+#include "io/model_import.hpp"
+#include "io/scene_reader.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -34,25 +38,45 @@ void reject_unbuilt_options(const RenderArgs& a) {
     throw InputError("--frames", 0, "expected 'last' or 'all', got '" + a.frames + "'");
 }
 
-Trace load_input(const RenderArgs& a, const Params& params) {
+// What render draws: the triangle- or DDA-level trace, and for models,
+// scenes and polygon traces the polygon-level trace it came from.
+struct LoadedInput {
+  Trace trace;
+  std::optional<Trace> polygons;
+  std::optional<FrontendCounts> frontend;
+};
+
+LoadedInput load_input(const RenderArgs& a, const Params& params) {
   if (!fs::exists(a.input)) throw InputError(a.input, 0, "no such file");
   std::optional<TraceLevel> level;
   if (!a.level.empty()) level = parse_level(a.level, "--level", 0);
+  LoadedInput in;
   if (!level && !has_trace_header(a.input)) {
-    const std::string ext = fs::path(a.input).extension().string();
-    if (ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".off" || ext == ".json")
-      throw InputError(a.input, 0, "model and scene files need the front end, which is not built yet");
+    std::string ext = fs::path(a.input).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == ".json") in.polygons = read_scene(a.input, params);
+    else if (is_model_file(a.input)) in.polygons = scene_from_model(a.input, params);
   }
-  Trace trace = read_trace(a.input, level, params);
+  if (!in.polygons) {
+    Trace t = read_trace(a.input, level, params);
+    if (t.level == TraceLevel::kPolygon) in.polygons = std::move(t);
+    else in.trace = std::move(t);
+  }
   if (a.aa) {
     if (*a.aa < 0) throw InputError("--aa", 0, "Q must be >= 0");
-    for (TraceFrame& f : trace.frames) {
+    Trace& t = in.polygons ? *in.polygons : in.trace;
+    for (TraceFrame& f : t.frames) {
       f.settings.q = *a.aa;
       f.settings.q_line = 0;
       for (DdaParams& d : f.dda) d.q = *a.aa;
     }
   }
-  return trace;
+  if (in.polygons) {
+    FrontEndRun run = run_front_end(*in.polygons, params);
+    in.trace = std::move(run.triangles);
+    in.frontend = run.counts;
+  }
+  return in;
 }
 
 }  // namespace
@@ -63,18 +87,21 @@ int run_render(const RenderArgs& a) {
   auto backend = make_backend(a.backend, params);
   if (a.aa && !is_hardware_q(*a.aa) && a.backend != "reference")
     throw InputError("--aa", 0, "Q must be 0 or a power of two 1/16..8 for the hardware back ends");
-  const Trace trace = load_input(a, params);
+  const LoadedInput input = load_input(a, params);
+  const Trace& trace = input.trace;
 
   RenderOptions opt;
   opt.keep_all_frames = a.frames == "all";
   if (!a.dump.empty()) opt.dump = parse_dump(a.dump);
   opt.progress = isatty(STDERR_FILENO);
-  const RenderOutput out = render_trace(trace, *backend, params, opt);
+  if (input.polygons) opt.polygon_source = &*input.polygons;
+  RenderOutput out = render_trace(trace, *backend, params, opt);
+  out.stats.frontend = input.frontend;
 
   ReportContext ctx;
   ctx.backend = backend->name();
   ctx.input = a.input;
-  ctx.level = level_name(trace.level);
+  ctx.level = level_name(input.polygons ? TraceLevel::kPolygon : trace.level);
   ctx.not_modeled = backend->not_modeled();
   ctx.image_sha256 = sha256_hex(out.shown.rgb);
   const nlohmann::json report = make_report(ctx, out.stats, params);
@@ -97,6 +124,15 @@ int run_render(const RenderArgs& a) {
     const RunStats& s = out.stats;
     std::printf("girtd render: %s on the %s back end, %llu frame(s)\n", a.input.c_str(), ctx.backend.c_str(),
                 static_cast<unsigned long long>(s.frames));
+    if (s.frontend)
+      std::printf("  front end  %llu polygons: %llu culled, %llu clipped, %llu clipped away; %llu triangles made, "
+                  "%llu off the window, %llu out\n",
+                  static_cast<unsigned long long>(s.frontend->polygons), static_cast<unsigned long long>(s.frontend->culled),
+                  static_cast<unsigned long long>(s.frontend->clipped),
+                  static_cast<unsigned long long>(s.frontend->clipped_away),
+                  static_cast<unsigned long long>(s.frontend->triangles_made),
+                  static_cast<unsigned long long>(s.frontend->discarded_off_window),
+                  static_cast<unsigned long long>(s.frontend->triangles_out));
     std::printf("  triangles  %llu in, %llu drawn\n", static_cast<unsigned long long>(s.triangles_in),
                 static_cast<unsigned long long>(s.triangles_drawn));
     std::printf("  pixels     %llu generated: %llu written, %llu blended, %llu z-rejected, %llu dropped\n",

@@ -64,6 +64,27 @@ json make_report(const ReportContext& ctx, const RunStats& s, const Params& para
                          {"no_lattice_row", s.preparer->no_lattice_row},
                          {"clamped_values", s.preparer->clamped_values}};
   }
+  if (s.frontend) {
+    const FrontendCounts& f = *s.frontend;
+    r["frontend"] = json{{"polygons", f.polygons},
+                         {"culled", f.culled},
+                         {"clipped", f.clipped},
+                         {"clipped_away", f.clipped_away},
+                         {"degenerate_polygons", f.degenerate_polygons},
+                         {"non_planar", f.non_planar},
+                         {"concave", f.concave},
+                         {"ear_clipped", f.ear_clipped},
+                         {"triangulation_fallbacks", f.triangulation_fallbacks},
+                         {"triangles_made", f.triangles_made},
+                         {"made_edges", f.made_edges},
+                         {"degenerate_triangles", f.degenerate_triangles},
+                         {"discarded_off_window", f.discarded_off_window},
+                         {"triangles_out", f.triangles_out},
+                         {"depth_sort_comparisons", f.depth_sort_comparisons},
+                         {"full_sorts", f.full_sorts}};
+  } else {
+    r["frontend"] = nullptr;  // the input entered below the front end (a triangle or dda trace)
+  }
   r["wall_s"] = s.wall_s;
   r["image_sha256"] = ctx.image_sha256;
   r["not_modeled"] = ctx.not_modeled;
@@ -98,6 +119,11 @@ std::string report_markdown(const json& r) {
                        r.at("pixels_z_rejected").get<uint64_t>() + r.at("pixels_dropped").get<uint64_t>();
   o << "\nPixel accounting: generated " << gen << " = written + blended + z_rejected + dropped = " << sum
     << (gen == sum ? " (holds)" : " (BROKEN)") << "\n";
+  if (r.contains("frontend") && r.at("frontend").is_object()) {
+    o << "\nFront end (counts over all frames):\n\n| count | value |\n|---|---|\n";
+    for (auto it = r.at("frontend").begin(); it != r.at("frontend").end(); ++it)
+      o << "| `" << it.key() << "` | " << it->dump() << " |\n";
+  }
   o << "\nStages:\n\n| stage | items | busy_s | stall_s |\n|---|---|---|---|\n";
   for (auto it = r.at("stages").begin(); it != r.at("stages").end(); ++it) {
     auto show = [](const json& v) { return v.is_null() ? std::string("not modeled") : v.dump(); };

@@ -7,10 +7,12 @@
 
 #include "common/types.hpp"
 #include "dda/dda_params.hpp"
+#include "frontend/world_frame.hpp"
 
 namespace girtd {
 
-enum class TraceLevel { kTriangle, kDda };
+// kThesis: the thesis appendix program's own units (models/thesis/README.md).
+enum class TraceLevel { kTriangle, kDda, kPolygon, kThesis };
 
 const char* level_name(TraceLevel level);
 // Throws InputError(origin, line, ...) for an unknown name.
@@ -18,9 +20,10 @@ TraceLevel parse_level(const std::string& name, const std::string& origin, int l
 
 struct TraceFrame {
   FrameSettings settings;
-  std::vector<Triangle> triangles;  // level triangle
+  std::vector<Triangle> triangles;  // level triangle (level thesis: vertices in the program's units)
   std::vector<DdaParams> dda;       // level dda
-  size_t primitive_count() const { return triangles.size() + dda.size(); }
+  WorldFrame world;                 // level polygon: polygons, surfaces, lights, camera
+  size_t primitive_count() const { return triangles.size() + dda.size() + world.polygons.size(); }
 };
 
 struct Trace {

@@ -13,12 +13,22 @@
 
 namespace girtd {
 
-const char* level_name(TraceLevel level) { return level == TraceLevel::kTriangle ? "triangle" : "dda"; }
+const char* level_name(TraceLevel level) {
+  switch (level) {
+    case TraceLevel::kTriangle: return "triangle";
+    case TraceLevel::kDda: return "dda";
+    case TraceLevel::kPolygon: return "polygon";
+    case TraceLevel::kThesis: return "thesis";
+  }
+  return "?";
+}
 
 TraceLevel parse_level(const std::string& name, const std::string& origin, int line) {
   if (name == "triangle") return TraceLevel::kTriangle;
   if (name == "dda") return TraceLevel::kDda;
-  throw InputError(origin, line, "unknown trace level '" + name + "' (known: triangle, dda)");
+  if (name == "polygon" || name == "polygons") return TraceLevel::kPolygon;
+  if (name == "thesis") return TraceLevel::kThesis;
+  throw InputError(origin, line, "unknown trace level '" + name + "' (known: polygon, triangle, dda, thesis)");
 }
 
 size_t Trace::primitive_count() const {
@@ -111,6 +121,9 @@ class TraceBuilder {
     if (k == "tri") return triangle(p);
     if (k == "format") return format(p);
     if (k == "dda") return dda(p);
+    if (k == "surface" || k == "lights" || k == "camera" || k == "focal" || k == "cull") return world_setting(p);
+    if (k == "poly") return polygon(p);
+    if (level_ == TraceLevel::kThesis) return thesis_record(p);
     p.fail("unknown record '" + k + "'");
   }
 
@@ -130,8 +143,11 @@ class TraceBuilder {
     p.expect_count(0, "fields");
     if (current().primitive_count() == 0) return;  // frames without primitives are not kept
     FrameSettings carried = current().settings;
+    WorldFrame carried_world = current().world;
+    carried_world.polygons.clear();
     trace_.frames.emplace_back();
     current().settings = carried;
+    current().world = std::move(carried_world);
   }
 
   void setting(const LineParser& p) {
@@ -220,6 +236,114 @@ class TraceBuilder {
     current().dda.push_back(d);
   }
 
+  // Level polygon (traces/FORMAT.md): the world records carry over like settings.
+  void world_setting(const LineParser& p) {
+    require_level(p, TraceLevel::kPolygon);
+    if (current().primitive_count() > 0)
+      p.fail("'" + p.keyword() + "' must come before the first primitive of a frame");
+    WorldFrame& w = current().world;
+    const std::string& k = p.keyword();
+    if (k == "surface") {
+      p.expect_count(7 + kCreSteps, "numbers (ID R G B N TMIN TMAX and CRE at 0, 15, ..., 90 deg)");
+      const size_t id = static_cast<size_t>(p.integer_in(1, "ID", 0, static_cast<int64_t>(w.surfaces.size())));
+      Surface s;
+      s.r = p.real_in(2, "R", 0, 255);
+      s.g = p.real_in(3, "G", 0, 255);
+      s.b = p.real_in(4, "B", 0, 255);
+      s.n = p.real_in(5, "N", 1, 1000);
+      s.t_min = p.real_in(6, "TMIN", 0, 1);
+      s.t_max = p.real_in(7, "TMAX", 0, 1);
+      for (int i = 0; i < kCreSteps; ++i) s.cre[static_cast<size_t>(i)] = p.real_in(8 + static_cast<size_t>(i), "CRE", 0, 1);
+      if (id == w.surfaces.size()) w.surfaces.push_back(s);
+      else w.surfaces[id] = s;
+    } else if (k == "lights") {
+      if (p.size() < 3) p.fail("'lights' takes ID K and then DX DY DZ IF for each of K lights");
+      const int64_t count = p.integer_in(2, "K", 0, kMaxTraceLights);
+      p.expect_count(2 + 4 * static_cast<size_t>(count), "numbers (ID K, then DX DY DZ IF per light)");
+      w.lights.ambient = p.real_in(1, "ID", 0, 16);
+      w.lights.directional.clear();
+      for (size_t i = 0; i < static_cast<size_t>(count); ++i) {
+        const size_t b = 3 + 4 * i;
+        const Vec3 d{p.real_in(b, "DX", -1e6, 1e6), p.real_in(b + 1, "DY", -1e6, 1e6), p.real_in(b + 2, "DZ", -1e6, 1e6)};
+        if (length(d) == 0) p.fail("light direction is the zero vector");
+        w.lights.directional.push_back({normalized(d), p.real_in(b + 3, "IF", 0, 16)});
+      }
+    } else if (k == "camera") {
+      p.expect_count(13, "numbers (CX CY CZ, RIGHT, UP, FORWARD as unit vectors, D/S)");
+      Camera& c = w.camera;
+      Vec3* v[4] = {&c.centre, &c.right, &c.up, &c.forward};
+      for (size_t i = 0; i < 4; ++i) *v[i] = {p.real_in(1 + 3 * i, "camera", -1e12, 1e12), p.real_in(2 + 3 * i, "camera", -1e12, 1e12), p.real_in(3 + 3 * i, "camera", -1e12, 1e12)};
+      c.d_over_s = p.real_in(13, "D/S", 1e-6, 1e6);
+      const double tol = 1e-6;
+      auto unit = [&](Vec3 a) { return std::fabs(length(a) - 1) <= tol; };
+      if (!unit(c.right) || !unit(c.up) || !unit(c.forward) || std::fabs(dot(c.right, c.up)) > tol ||
+          std::fabs(dot(c.up, c.forward)) > tol || std::fabs(dot(c.right, c.forward)) > tol)
+        p.fail("camera axes must be orthonormal (right, up, forward)");
+      camera_seen_ = true;
+    } else if (k == "focal") {
+      p.expect_count(1, "number (C > 0)");
+      w.focal_distance = p.real_in(1, "C", 1e-12, 1e12);
+      if (w.focal_distance <= 0) p.fail("C must be > 0");
+      focal_seen_ = true;
+    } else {
+      p.expect_count(1, "integer (0 or 1)");
+      w.cull_back_faces = p.integer_in(1, "cull", 0, 1) == 1;
+    }
+  }
+
+  // Level thesis: `bg R G B`, `qq 0|1`, and triangles as 21 bare numbers.
+  void thesis_record(const LineParser& p) {
+    FrameSettings& s = current().settings;
+    if (p.keyword() == "bg") {
+      p.expect_count(3, "integers (R G B)");
+      s.background = {static_cast<uint8_t>(p.integer_in(1, "R", 0, 255)),
+                      static_cast<uint8_t>(p.integer_in(2, "G", 0, 255)),
+                      static_cast<uint8_t>(p.integer_in(3, "B", 0, 255))};
+      return;
+    }
+    if (p.keyword() == "qq") {
+      p.expect_count(1, "flag (0 or 1)");
+      s.qq = p.integer_in(1, "qq", 0, 1) == 1;
+      return;
+    }
+    if (p.size() != 21) p.fail("a thesis triangle is 21 numbers (x y z r g b t for 3 vertices), got " +
+                               std::to_string(p.size()) + " fields");
+    Triangle t;
+    t.source_line = p.line();
+    for (int i = 0; i < 3; ++i) {
+      const size_t b = 7 * i;
+      Vertex& v = t.v[i];
+      v.x = p.real_in(b + 0, "x", -1e3, 1e3);
+      v.y = p.real_in(b + 1, "y", -1e3, 1e3);
+      v.z = p.real_in(b + 2, "z", 0, 1);
+      v.r = p.real_in(b + 3, "r", 0, 1);
+      v.g = p.real_in(b + 4, "g", 0, 1);
+      v.b = p.real_in(b + 5, "b", 0, 1);
+      v.t = p.real_in(b + 6, "t", 0, 1);
+    }
+    current().triangles.push_back(t);
+  }
+
+  void polygon(const LineParser& p) {
+    require_level(p, TraceLevel::kPolygon);
+    if (!camera_seen_ || !focal_seen_) p.fail("'poly' before the 'camera' and 'focal' records");
+    WorldFrame& w = current().world;
+    if (p.size() < 3) p.fail("'poly' takes SURFACE N and then X Y Z for each of N vertices");
+    WorldPolygon poly;
+    poly.source_line = p.line();
+    poly.surface = static_cast<int>(p.integer_in(1, "SURFACE", 0, static_cast<int64_t>(w.surfaces.size()) - 1));
+    const int64_t n = p.integer_in(2, "N", 3, kMaxTracePolygonVertices);
+    p.expect_count(2 + 3 * static_cast<size_t>(n), "numbers (SURFACE N, then X Y Z per vertex)");
+    for (size_t i = 0; i < static_cast<size_t>(n); ++i)
+      poly.p.push_back({p.real_in(3 + 3 * i, "X", -1e12, 1e12), p.real_in(4 + 3 * i, "Y", -1e12, 1e12),
+                        p.real_in(5 + 3 * i, "Z", -1e12, 1e12)});
+    w.polygons.push_back(std::move(poly));
+  }
+
+  static constexpr int64_t kMaxTraceLights = 64;
+  static constexpr int64_t kMaxTracePolygonVertices = 65536;
+
+  bool camera_seen_ = false, focal_seen_ = false;
   const Params& params_;
   Trace trace_;
   TraceLevel level_ = TraceLevel::kTriangle;
@@ -268,6 +392,17 @@ Trace read_trace(const std::string& path, std::optional<TraceLevel> forced_level
   std::ifstream in(path);
   if (!in) throw InputError(path, 0, "cannot open file");
   return read_trace(in, path, forced_level, params);
+}
+
+std::optional<TraceLevel> header_level(const std::string& path) {
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    const std::vector<std::string> f = split_fields(line);
+    if (f.empty()) continue;
+    if (f[0] != "girtd-trace" || f.size() != 3) return std::nullopt;
+    return parse_level(f[2], path, 0);
+  }
+  return std::nullopt;
 }
 
 bool has_trace_header(const std::string& path) {

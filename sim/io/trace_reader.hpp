@@ -19,5 +19,7 @@ Trace read_trace(std::istream& in, const std::string& path, std::optional<TraceL
 
 // True when the file's first record is a girtd-trace header.
 bool has_trace_header(const std::string& path);
+// The level its header names (nullopt: no header; InputError: an unknown level).
+std::optional<TraceLevel> header_level(const std::string& path);
 
 }  // namespace girtd

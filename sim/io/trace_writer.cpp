@@ -62,6 +62,40 @@ void TraceWriter::write(const DdaParams& p) {
   out_ << "\n";
 }
 
+namespace {
+
+bool same_surface(const Surface& a, const Surface& b) {
+  return a.r == b.r && a.g == b.g && a.b == b.b && a.n == b.n && a.t_min == b.t_min && a.t_max == b.t_max &&
+         a.cre == b.cre;
+}
+
+}  // namespace
+
+void TraceWriter::write(const WorldFrame& w) {
+  for (size_t i = 0; i < w.surfaces.size(); ++i) {
+    const Surface& s = w.surfaces[i];
+    if (i < written_surfaces_.size() && same_surface(written_surfaces_[i], s)) continue;
+    out_ << "surface " << i << " " << s.r << " " << s.g << " " << s.b << " " << s.n << " " << s.t_min << " " << s.t_max;
+    for (double c : s.cre) out_ << " " << c;
+    out_ << "\n";
+  }
+  written_surfaces_ = w.surfaces;
+  out_ << "lights " << w.lights.ambient << " " << w.lights.directional.size();
+  for (const DirectionalLight& l : w.lights.directional)
+    out_ << "  " << l.toward.x << " " << l.toward.y << " " << l.toward.z << " " << l.intensity;
+  out_ << "\n";
+  const Camera& c = w.camera;
+  out_ << "camera";
+  for (const Vec3& v : {c.centre, c.right, c.up, c.forward}) out_ << "  " << v.x << " " << v.y << " " << v.z;
+  out_ << "  " << c.d_over_s << "\n";
+  out_ << "focal " << w.focal_distance << "\ncull " << (w.cull_back_faces ? 1 : 0) << "\n";
+  for (const WorldPolygon& poly : w.polygons) {
+    out_ << "poly " << poly.surface << " " << poly.p.size();
+    for (const Vec3& v : poly.p) out_ << "  " << v.x << " " << v.y << " " << v.z;
+    out_ << "\n";
+  }
+}
+
 void TraceWriter::commit() {
   out_.close();
   if (!out_ || std::rename(tmp_path_.c_str(), path_.c_str()) != 0)

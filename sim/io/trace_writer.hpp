@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "config/params.hpp"
 #include "io/trace.hpp"
@@ -21,12 +22,16 @@ class TraceWriter {
   void begin_frame(const FrameSettings& s);
   void write(const Triangle& t);
   void write(const DdaParams& p);
+  // Level polygon: the frame's surfaces (when they changed), lights, camera,
+  // focal distance, culling, then its polygons.
+  void write(const WorldFrame& w);
   void commit();
 
  private:
   std::string path_, tmp_path_;
   std::ofstream out_;
   bool first_frame_ = true, committed_ = false;
+  std::vector<Surface> written_surfaces_;
 };
 
 // The `format` record for the EP formats of `params`.

@@ -74,9 +74,11 @@ std::vector<std::string> traces_under(const std::string& dir) {
   std::vector<std::string> out;
   if (!fs::is_directory(dir)) throw InputError(dir, 0, "no such directory: run from the repository root or name traces");
   for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file() && (e.path().extension() == ".trace" || e.path().extension() == ".dda") &&
-        has_trace_header(e.path().string()))
-      out.push_back(e.path().string());
+    if (e.is_regular_file() && (e.path().extension() == ".trace" || e.path().extension() == ".dda")) {
+      // The RTL takes what reaches the preparer or the DDA: triangle and DDA levels.
+      const auto level = header_level(e.path().string());
+      if (level == TraceLevel::kTriangle || level == TraceLevel::kDda) out.push_back(e.path().string());
+    }
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -85,6 +87,8 @@ RegressionRow regress_trace(const std::string& path, const Params& p, DdaRtl& rt
   RegressionRow row;
   row.name = path;
   const Trace trace = read_trace(path, std::nullopt, p);
+  if (trace.level != TraceLevel::kTriangle && trace.level != TraceLevel::kDda)
+    throw InputError(path, 0, std::string("regress takes triangle- and DDA-level traces, not ") + level_name(trace.level));
   for (const TraceFrame& f : trace.frames)
     if (!is_hardware_q(f.settings.q))
       throw InputError(path, f.settings.q_line, "Q must be 0 or a power of two 1/16..8 for the RTL");

@@ -1,0 +1,59 @@
+// What the front end receives for one frame: world-space polygons with
+// surface ids, and the surfaces, lights and camera they are seen with. This is
+// the `polygon` trace level (traces/FORMAT.md); scenes and models become it.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "frontend/vec3.hpp"
+
+namespace girtd {
+
+// CRE(i) sampled at i = 0, 15, ..., 90 degrees of incidence.
+inline constexpr int kCreSteps = 7;
+inline constexpr double kCreStepDeg = 15.0;
+
+// A surface's material (§3 lighting). Polygons of one surface share vertex
+// normals; a vertex on two surfaces keeps one normal per surface.
+struct Surface {
+  double r = 200, g = 200, b = 200;  // diffuse reflectance as a colour, 0..255
+  std::array<double, kCreSteps> cre{};  // specular reflectance 0..1 per 15 deg
+  double n = 1;                         // specular exponent, 1 (matte) .. 200 (mirror)
+  double t_min = 0, t_max = 0;          // Tf = Tmin + (Tmax - Tmin)|N.E|; opaque 0, 0
+};
+
+struct DirectionalLight {
+  Vec3 toward;           // unit vector toward the light (world space)
+  double intensity = 1;  // If
+};
+
+struct LightSet {
+  double ambient = 0;  // Id
+  std::vector<DirectionalLight> directional;
+};
+
+// Camera centre and its axes in world coordinates: camera space is
+// Xs = (P - centre).right, Ys = (P - centre).up, Zs = (P - centre).forward.
+struct Camera {
+  Vec3 centre;
+  Vec3 right{1, 0, 0}, up{0, 1, 0}, forward{0, 0, -1};
+  double d_over_s = 1;  // D/S of Xp = Xs/Zs * D/S: 1 / tan(half field of view)
+};
+
+struct WorldPolygon {
+  int surface = 0;
+  std::vector<Vec3> p;  // counter-clockwise seen from the front (outside)
+  int source_line = 0;  // where it came from, for error messages
+};
+
+struct WorldFrame {
+  Camera camera;
+  LightSet lights;
+  std::vector<Surface> surfaces;
+  double focal_distance = 0;  // C: the depth clip keeps Zs > C
+  bool cull_back_faces = false;
+  std::vector<WorldPolygon> polygons;
+};
+
+}  // namespace girtd

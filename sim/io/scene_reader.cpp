@@ -1,0 +1,436 @@
+#include "io/scene_reader.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "common/input_error.hpp"
+#include "frontend/json_lines.hpp"
+#include "frontend/surface_groups.hpp"
+#include "frontend/view_transform.hpp"
+#include "io/model_import.hpp"
+
+namespace girtd {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+Surface SceneDefaults::material() {
+  Surface s;
+  s.r = s.g = s.b = 200;
+  s.cre = {0.30, 0.30, 0.31, 0.33, 0.38, 0.50, 0.80};
+  s.n = 20;
+  return s;
+}
+
+namespace {
+
+constexpr int kSceneVersion = 1;
+constexpr size_t kMaxFrames = 100000;
+
+struct Transform {
+  Vec3 scale{1, 1, 1}, rotate_deg, translate;
+  // p' = translate + Rz Ry Rx (scale p): scale, then rotate about X, Y, Z, then move.
+  Vec3 apply(Vec3 p) const {
+    p = {p.x * scale.x, p.y * scale.y, p.z * scale.z};
+    const double k = M_PI / 180.0;
+    double c = std::cos(rotate_deg.x * k), s = std::sin(rotate_deg.x * k);
+    p = {p.x, c * p.y - s * p.z, s * p.y + c * p.z};
+    c = std::cos(rotate_deg.y * k), s = std::sin(rotate_deg.y * k);
+    p = {c * p.x + s * p.z, p.y, -s * p.x + c * p.z};
+    c = std::cos(rotate_deg.z * k), s = std::sin(rotate_deg.z * k);
+    p = {c * p.x - s * p.y, s * p.x + c * p.y, p.z};
+    return p + translate;
+  }
+  bool mirrors() const { return scale.x * scale.y * scale.z < 0; }
+};
+
+struct Instance {
+  std::string name;
+  std::shared_ptr<const Mesh> mesh;
+  SurfaceGroups groups;
+  Surface material;
+  Transform transform;
+};
+
+// The camera as the scene gives it; "auto" frames the first frame's polygons.
+struct CameraSpec {
+  bool automatic = true;
+  Camera camera;
+};
+
+// Polygons, surfaces of every instance placed with its transform.
+void place(const std::vector<Instance>& instances, WorldFrame& w) {
+  for (const Instance& in : instances) {
+    const int base = static_cast<int>(w.surfaces.size());
+    for (int g = 0; g < in.groups.count; ++g) w.surfaces.push_back(in.material);
+    std::vector<Vec3> moved;
+    moved.reserve(in.mesh->positions.size());
+    for (const Vec3& p : in.mesh->positions) moved.push_back(in.transform.apply(p));
+    for (size_t i = 0; i < in.mesh->polygons.size(); ++i) {
+      WorldPolygon poly;
+      poly.surface = base + in.groups.group[i];
+      for (int k : in.mesh->polygons[i]) poly.p.push_back(moved[static_cast<size_t>(k)]);
+      if (in.transform.mirrors()) std::reverse(poly.p.begin(), poly.p.end());  // keep the front counter-clockwise
+      w.polygons.push_back(std::move(poly));
+    }
+  }
+}
+
+// Looks at the bounding box's centre from SceneDefaults::auto_view_direction,
+// far enough that the bounding sphere fits the field of view.
+void auto_frame(WorldFrame& w, double fov_deg, std::optional<double> focal) {
+  Vec3 lo{1e300, 1e300, 1e300}, hi = lo * -1.0;
+  for (const WorldPolygon& poly : w.polygons)
+    for (const Vec3& p : poly.p) {
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+  const Vec3 centre = (lo + hi) * 0.5;
+  double radius = 0;
+  for (const WorldPolygon& poly : w.polygons)
+    for (const Vec3& p : poly.p) radius = std::max(radius, length(p - centre));
+  if (radius == 0) radius = 1;
+  const double dist = radius / std::sin(0.5 * fov_deg * M_PI / 180.0) * SceneDefaults::kAutoMargin;
+  const Vec3 eye = centre + normalized(SceneDefaults::auto_view_direction()) * dist;
+  w.camera = *camera_look_at(eye, centre, {0, 1, 0}, fov_deg);  // the view direction is never vertical
+  w.focal_distance = focal ? *focal : dist * SceneDefaults::kAutoFocalFraction;
+}
+
+LightSet default_lights() {
+  LightSet l;
+  l.ambient = SceneDefaults::kAmbient;
+  l.directional.push_back({normalized(SceneDefaults::light_toward()), SceneDefaults::kLightIntensity});
+  return l;
+}
+
+class SceneReader {
+ public:
+  SceneReader(const std::string& path, const Params& params) : path_(path), params_(params) {
+    std::ifstream in(path);
+    if (!in) throw InputError(path, 0, "cannot open file");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    text_ = ss.str();
+    try {
+      root_ = json::parse(text_);
+    } catch (const json::parse_error& e) {
+      const size_t upto = std::min<size_t>(e.byte > 0 ? e.byte - 1 : 0, text_.size());
+      const int line = 1 + static_cast<int>(std::count(text_.begin(), text_.begin() + static_cast<long>(upto), '\n'));
+      std::string what = e.what();
+      const size_t colon = what.find("syntax error");
+      throw InputError(path, line, "invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon)));
+    }
+    lines_ = std::make_unique<JsonLines>(text_);
+  }
+
+  Trace read() {
+    keys(root_, "", {"girtd_scene", "comment", "window", "background", "q", "cull_back_faces", "focal_distance",
+                     "camera", "lights", "materials", "models", "frames"});
+    if (!root_.contains("girtd_scene")) fail("", "not a GIRTD scene: no \"girtd_scene\": 1");
+    if (integer("/girtd_scene", 1, 1000) != kSceneVersion)
+      fail("/girtd_scene", "scene version " + root_["girtd_scene"].dump() + " is not supported (this reader knows 1)");
+    FrameSettings settings;
+    if (root_.contains("window")) {
+      const json& w = at("/window");
+      if (!w.is_array() || w.size() != 4) fail("/window", "window is [X0, Y0, X1, Y1]");
+      settings.window.x0 = static_cast<int>(integer("/window/0", 0, params_.screen_width - 1));
+      settings.window.y0 = static_cast<int>(integer("/window/1", 0, params_.screen_height - 1));
+      settings.window.x1 = static_cast<int>(integer("/window/2", 0, params_.screen_width - 1));
+      settings.window.y1 = static_cast<int>(integer("/window/3", 0, params_.screen_height - 1));
+      if (settings.window.x0 > settings.window.x1 || settings.window.y0 > settings.window.y1)
+        fail("/window", "window is empty (X0 > X1 or Y0 > Y1)");
+    }
+    if (root_.contains("background")) {
+      const json& b = at("/background");
+      if (!b.is_array() || b.size() != 3) fail("/background", "background is [R, G, B]");
+      settings.background = {static_cast<uint8_t>(integer("/background/0", 0, 255)),
+                             static_cast<uint8_t>(integer("/background/1", 0, 255)),
+                             static_cast<uint8_t>(integer("/background/2", 0, 255))};
+    }
+    if (root_.contains("q")) {
+      settings.q = number("/q", 0, 64);
+      settings.q_line = lines_->line("/q");
+    }
+    WorldFrame base;
+    base.cull_back_faces = root_.contains("cull_back_faces") ? boolean("/cull_back_faces") : false;
+    std::optional<double> focal;
+    if (root_.contains("focal_distance")) focal = number("/focal_distance", 1e-9, 1e12);
+    base.lights = root_.contains("lights") ? lights("/lights") : default_lights();
+    const std::map<std::string, Surface> materials = read_materials();
+    std::vector<Instance> instances = read_models(materials);
+    const CameraSpec base_camera = root_.contains("camera") ? camera("/camera") : CameraSpec{};
+
+    Trace trace;
+    trace.path = path_;
+    trace.level = TraceLevel::kPolygon;
+    const size_t n_frames = root_.contains("frames") ? frames_count() : 1;
+    std::optional<Camera> auto_camera;
+    for (size_t f = 0; f < n_frames; ++f) {
+      const std::string fp = "/frames/" + std::to_string(f);
+      CameraSpec cam = base_camera;
+      std::vector<Instance> moved = instances;
+      if (root_.contains("frames")) {
+        keys(at(fp), fp, {"camera", "models", "comment"});
+        if (at(fp).contains("camera")) cam = camera(fp + "/camera");
+        if (at(fp).contains("models")) frame_models(fp + "/models", moved);
+      }
+      TraceFrame tf;
+      tf.settings = settings;
+      tf.world.cull_back_faces = base.cull_back_faces;
+      tf.world.lights = base.lights;
+      place(moved, tf.world);
+      for (WorldPolygon& p : tf.world.polygons) p.source_line = lines_->line(root_.contains("frames") ? fp : "/models");
+      if (cam.automatic) {
+        // Framed once, on the first frame that needs it, so an animation does not zoom.
+        if (!auto_camera) {
+          auto_frame(tf.world, SceneDefaults::kFovDeg, focal);
+          auto_camera = tf.world.camera;
+          auto_focal_ = tf.world.focal_distance;
+        }
+        tf.world.camera = *auto_camera;
+        tf.world.focal_distance = auto_focal_;
+      } else {
+        tf.world.camera = cam.camera;
+        tf.world.focal_distance = focal ? *focal : SceneDefaults::kFocalDistance;
+      }
+      trace.frames.push_back(std::move(tf));
+    }
+    return trace;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& ptr, const std::string& what) const {
+    throw InputError(path_, lines_ ? lines_->line(ptr) : 0, what);
+  }
+  static std::string key_name(const std::string& ptr) { return ptr.empty() ? "scene" : "\"" + ptr.substr(1) + "\""; }
+
+  const json& at(const std::string& ptr) const { return root_.at(json::json_pointer(ptr)); }
+
+  void keys(const json& obj, const std::string& ptr, std::initializer_list<const char*> allowed) const {
+    if (!obj.is_object()) fail(ptr, key_name(ptr) + " must be an object");
+    const std::set<std::string> ok(allowed.begin(), allowed.end());
+    for (auto it = obj.begin(); it != obj.end(); ++it)
+      if (!ok.count(it.key())) {
+        std::string list;
+        for (const std::string& k : ok) list += (list.empty() ? "" : ", ") + k;
+        fail(ptr + "/" + it.key(), "unknown key \"" + it.key() + "\" in " + key_name(ptr) + " (known: " + list + ")");
+      }
+  }
+
+  double number(const std::string& ptr, double lo, double hi) const {
+    const json& v = at(ptr);
+    if (!v.is_number()) fail(ptr, key_name(ptr) + " must be a number");
+    const double d = v.get<double>();
+    if (!std::isfinite(d) || d < lo || d > hi) {
+      std::ostringstream o;
+      o << key_name(ptr) << " = " << v.dump() << " is outside " << lo << ".." << hi;
+      fail(ptr, o.str());
+    }
+    return d;
+  }
+
+  int64_t integer(const std::string& ptr, int64_t lo, int64_t hi) const {
+    const json& v = at(ptr);
+    if (!v.is_number_integer()) fail(ptr, key_name(ptr) + " must be an integer");
+    const int64_t i = v.get<int64_t>();
+    if (i < lo || i > hi)
+      fail(ptr, key_name(ptr) + " = " + v.dump() + " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
+    return i;
+  }
+
+  bool boolean(const std::string& ptr) const {
+    const json& v = at(ptr);
+    if (!v.is_boolean()) fail(ptr, key_name(ptr) + " must be true or false");
+    return v.get<bool>();
+  }
+
+  std::string string(const std::string& ptr) const {
+    const json& v = at(ptr);
+    if (!v.is_string()) fail(ptr, key_name(ptr) + " must be a string");
+    return v.get<std::string>();
+  }
+
+  Vec3 vec3(const std::string& ptr, double limit = 1e12) const {
+    const json& v = at(ptr);
+    if (!v.is_array() || v.size() != 3) fail(ptr, key_name(ptr) + " must be [x, y, z]");
+    return {number(ptr + "/0", -limit, limit), number(ptr + "/1", -limit, limit), number(ptr + "/2", -limit, limit)};
+  }
+
+  LightSet lights(const std::string& ptr) const {
+    keys(at(ptr), ptr, {"ambient", "directional"});
+    LightSet l;
+    l.ambient = at(ptr).contains("ambient") ? number(ptr + "/ambient", 0, 16) : 0.0;
+    if (!at(ptr).contains("directional")) return l;
+    const json& d = at(ptr + "/directional");
+    if (!d.is_array()) fail(ptr + "/directional", "\"directional\" must be a list of lights");
+    for (size_t i = 0; i < d.size(); ++i) {
+      const std::string lp = ptr + "/directional/" + std::to_string(i);
+      keys(at(lp), lp, {"toward", "intensity"});
+      if (!at(lp).contains("toward")) fail(lp, "a directional light needs \"toward\" (the direction toward the light)");
+      const Vec3 t = vec3(lp + "/toward");
+      if (length(t) == 0) fail(lp + "/toward", "\"toward\" is the zero vector");
+      l.directional.push_back({normalized(t), at(lp).contains("intensity") ? number(lp + "/intensity", 0, 16) : 1.0});
+    }
+    return l;
+  }
+
+  std::map<std::string, Surface> read_materials() const {
+    std::map<std::string, Surface> out;
+    if (!root_.contains("materials")) return out;
+    const json& m = at("/materials");
+    if (!m.is_object()) fail("/materials", "\"materials\" must be an object of named materials");
+    for (auto it = m.begin(); it != m.end(); ++it) {
+      const std::string mp = "/materials/" + it.key();
+      keys(it.value(), mp, {"colour", "cre", "n", "t_min", "t_max"});
+      Surface s = SceneDefaults::material();
+      if (it->contains("colour")) {
+        const Vec3 c = vec3(mp + "/colour", 1e12);
+        for (int k = 0; k < 3; ++k) number(mp + "/colour/" + std::to_string(k), 0, 255);
+        s.r = c.x, s.g = c.y, s.b = c.z;
+      }
+      if (it->contains("cre")) {
+        const json& c = at(mp + "/cre");
+        if (!c.is_array() || c.size() != static_cast<size_t>(kCreSteps))
+          fail(mp + "/cre", "\"cre\" must list CRE at 0, 15, 30, 45, 60, 75 and 90 degrees (7 numbers)");
+        for (int k = 0; k < kCreSteps; ++k) s.cre[static_cast<size_t>(k)] = number(mp + "/cre/" + std::to_string(k), 0, 1);
+      }
+      if (it->contains("n")) s.n = number(mp + "/n", 1, 1000);
+      if (it->contains("t_min")) s.t_min = number(mp + "/t_min", 0, 1);
+      if (it->contains("t_max")) s.t_max = number(mp + "/t_max", 0, 1);
+      out[it.key()] = s;
+    }
+    return out;
+  }
+
+  void transform_keys(const std::string& ptr, Transform& t) const {
+    const json& j = at(ptr);
+    if (j.contains("scale")) {
+      if (at(ptr + "/scale").is_number()) {
+        const double s = number(ptr + "/scale", -1e9, 1e9);
+        t.scale = {s, s, s};
+      } else {
+        t.scale = vec3(ptr + "/scale", 1e9);
+      }
+      if (t.scale.x == 0 || t.scale.y == 0 || t.scale.z == 0) fail(ptr + "/scale", "a scale of 0 flattens the model");
+    }
+    if (j.contains("rotate_deg")) t.rotate_deg = vec3(ptr + "/rotate_deg", 1e6);
+    if (j.contains("translate")) t.translate = vec3(ptr + "/translate");
+  }
+
+  std::vector<Instance> read_models(const std::map<std::string, Surface>& materials) {
+    if (!root_.contains("models")) fail("", "the scene has no \"models\"");
+    const json& ms = at("/models");
+    if (!ms.is_array() || ms.empty()) fail("/models", "\"models\" must be a non-empty list");
+    std::vector<Instance> out;
+    std::map<std::string, std::shared_ptr<const Mesh>> cache;
+    for (size_t i = 0; i < ms.size(); ++i) {
+      const std::string mp = "/models/" + std::to_string(i);
+      keys(at(mp), mp, {"name", "file", "material", "crease_deg", "scale", "rotate_deg", "translate"});
+      Instance in;
+      in.name = at(mp).contains("name") ? string(mp + "/name") : "model" + std::to_string(i);
+      for (const Instance& o : out)
+        if (o.name == in.name) fail(mp + "/name", "two models are named \"" + in.name + "\"");
+      if (!at(mp).contains("file")) fail(mp, "a model needs \"file\"");
+      fs::path file = string(mp + "/file");
+      if (file.is_relative()) file = fs::path(path_).parent_path() / file;
+      const std::string key = file.lexically_normal().string();
+      if (!fs::exists(key)) fail(mp + "/file", "model file " + key + " does not exist");
+      if (!cache.count(key)) cache[key] = std::make_shared<const Mesh>(import_model(key));
+      in.mesh = cache[key];
+      in.material = SceneDefaults::material();
+      if (at(mp).contains("material")) {
+        const std::string name = string(mp + "/material");
+        auto it = materials.find(name);
+        if (it == materials.end()) fail(mp + "/material", "no material named \"" + name + "\" in \"materials\"");
+        in.material = it->second;
+      }
+      const double crease = at(mp).contains("crease_deg") ? number(mp + "/crease_deg", 0, 180) : kDefaultCreaseDeg;
+      in.groups = surface_groups(*in.mesh, crease);
+      transform_keys(mp, in.transform);
+      out.push_back(std::move(in));
+    }
+    return out;
+  }
+
+  CameraSpec camera(const std::string& ptr) const {
+    const json& c = at(ptr);
+    if (c.is_string() && c.get<std::string>() == "auto") return CameraSpec{};
+    keys(c, ptr, {"eye", "target", "up", "centre", "angles_deg", "fov_deg"});
+    const double fov = c.contains("fov_deg") ? number(ptr + "/fov_deg", 1, 170) : SceneDefaults::kFovDeg;
+    CameraSpec s;
+    s.automatic = false;
+    const bool look_at = c.contains("eye") || c.contains("target") || c.contains("up");
+    const bool angles = c.contains("centre") || c.contains("angles_deg");
+    if (look_at == angles)
+      fail(ptr, "camera is either {\"eye\", \"target\", \"up\"} or {\"centre\", \"angles_deg\"} (or \"auto\")");
+    if (look_at) {
+      if (!c.contains("eye") || !c.contains("target")) fail(ptr, "a look-at camera needs \"eye\" and \"target\"");
+      const Vec3 up = c.contains("up") ? vec3(ptr + "/up") : Vec3{0, 1, 0};
+      const std::optional<Camera> cam = camera_look_at(vec3(ptr + "/eye"), vec3(ptr + "/target"), up, fov);
+      if (!cam) fail(ptr, "eye equals target, or up is parallel to the view direction");
+      s.camera = *cam;
+    } else {
+      if (!c.contains("centre") || !c.contains("angles_deg"))
+        fail(ptr, "an angle camera needs \"centre\" and \"angles_deg\" [yaw, pitch, roll]");
+      const Vec3 a = vec3(ptr + "/angles_deg", 1e6);
+      s.camera = camera_from_angles(vec3(ptr + "/centre"), a.x, a.y, a.z, fov);
+    }
+    return s;
+  }
+
+  size_t frames_count() const {
+    const json& f = at("/frames");
+    if (!f.is_array() || f.empty()) fail("/frames", "\"frames\" must be a non-empty list");
+    if (f.size() > kMaxFrames) fail("/frames", "more than " + std::to_string(kMaxFrames) + " frames");
+    return f.size();
+  }
+
+  void frame_models(const std::string& ptr, std::vector<Instance>& moved) const {
+    const json& m = at(ptr);
+    if (!m.is_object()) fail(ptr, "a frame's \"models\" is an object: model name -> transform");
+    for (auto it = m.begin(); it != m.end(); ++it) {
+      const std::string mp = ptr + "/" + it.key();
+      auto in = std::find_if(moved.begin(), moved.end(), [&](const Instance& x) { return x.name == it.key(); });
+      if (in == moved.end()) fail(mp, "no model named \"" + it.key() + "\"");
+      keys(it.value(), mp, {"scale", "rotate_deg", "translate"});
+      transform_keys(mp, in->transform);
+    }
+  }
+
+  std::string path_, text_;
+  const Params& params_;
+  json root_;
+  std::unique_ptr<JsonLines> lines_;
+  double auto_focal_ = 0;
+};
+
+}  // namespace
+
+Trace read_scene(const std::string& path, const Params& params) { return SceneReader(path, params).read(); }
+
+Trace scene_from_model(const std::string& path, const Params& params) {
+  (void)params;
+  const Mesh mesh = import_model(path);
+  Instance in;
+  in.mesh = std::make_shared<const Mesh>(mesh);
+  in.groups = surface_groups(mesh, kDefaultCreaseDeg);
+  in.material = SceneDefaults::material();
+  Trace trace;
+  trace.path = path;
+  trace.level = TraceLevel::kPolygon;
+  TraceFrame tf;
+  tf.world.lights = default_lights();
+  place({in}, tf.world);
+  auto_frame(tf.world, SceneDefaults::kFovDeg, std::nullopt);
+  trace.frames.push_back(std::move(tf));
+  return trace;
+}
+
+}  // namespace girtd
