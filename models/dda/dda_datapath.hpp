@@ -8,6 +8,7 @@
 
 #include "common/fixed_point.hpp"
 #include "config/params.hpp"
+#include "common/types.hpp"
 #include "dda/dda_params.hpp"
 
 namespace girtd {
@@ -50,5 +51,19 @@ class DdaDatapath {
   DdaRegisters pix_, aux_;
 };
 
+// The 69-bit FIFO word (plus full-width X, Y) from the registers as they
+// stand: the EP output stages of fig. 4.20 and the nf the sequencer's nf unit
+// made from them.
+inline Pixel output_pixel(const DdaRegisters& r, const Params& p, int nf) {
+  Pixel px;
+  px.x = r.x;
+  px.y = r.y;
+  px.r = static_cast<uint8_t>(saturate_output(r.v[kEpR], p.ep_color));
+  px.g = static_cast<uint8_t>(saturate_output(r.v[kEpG], p.ep_color));
+  px.b = static_cast<uint8_t>(saturate_output(r.v[kEpB], p.ep_color));
+  px.z = static_cast<uint16_t>(saturate_output(r.v[kEpZ], p.ep_z));
+  px.nf = static_cast<uint16_t>(nf);
+  return px;
+}
 
 }  // namespace girtd

@@ -54,15 +54,10 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
       DdaEmit e;
       e.raw = r.v;
       e.cycle = st.cycles + static_cast<uint64_t>(params_.output_latency_clocks);
-      e.pixel.x = r.x;
-      e.pixel.y = r.y;
-      e.pixel.r = static_cast<uint8_t>(saturate_output(r.v[kEpR], params_.ep_color));
-      e.pixel.g = static_cast<uint8_t>(saturate_output(r.v[kEpG], params_.ep_color));
-      e.pixel.b = static_cast<uint8_t>(saturate_output(r.v[kEpB], params_.ep_color));
-      e.pixel.z = static_cast<uint16_t>(saturate_output(r.v[kEpZ], params_.ep_z));
       const int t = t_operand(saturate_output(r.v[kEpT], params_.ep_t));
-      e.pixel.nf = static_cast<uint16_t>(compute_nf(norm.norm(r.v[kEpD1]), norm.norm(r.v[kEpD2]),
-                                                    norm.norm(r.v[kEpD3]), t, params_.prom_frac_bits));
+      e.pixel = output_pixel(r, params_,
+                             compute_nf(norm.norm(r.v[kEpD1]), norm.norm(r.v[kEpD2]), norm.norm(r.v[kEpD3]), t,
+                                        params_.prom_frac_bits));
       sink(e);
     };
 

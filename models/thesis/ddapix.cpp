@@ -54,13 +54,7 @@ DdaRunStats DdaPix::run(const DdaParams& in, const DdaEngine::PixelSink& sink) c
     DdaEmit e;
     e.raw = r.v;
     e.cycle = st.cycles + static_cast<uint64_t>(params_.output_latency_clocks);
-    e.pixel.x = r.x;
-    e.pixel.y = r.y;
-    e.pixel.r = static_cast<uint8_t>(saturate_output(r.v[kEpR], params_.ep_color));
-    e.pixel.g = static_cast<uint8_t>(saturate_output(r.v[kEpG], params_.ep_color));
-    e.pixel.b = static_cast<uint8_t>(saturate_output(r.v[kEpB], params_.ep_color));
-    e.pixel.z = static_cast<uint16_t>(saturate_output(r.v[kEpZ], params_.ep_z));
-    e.pixel.nf = static_cast<uint16_t>(thesis_nf(r.v[kEpD1], r.v[kEpD2], r.v[kEpD3], r.v[kEpT]));
+    e.pixel = output_pixel(r, params_, thesis_nf(r.v[kEpD1], r.v[kEpD2], r.v[kEpD3], r.v[kEpT]));
     sink(e);
   };
   // lb1: the two half-rows around the current pixel.

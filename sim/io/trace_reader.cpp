@@ -106,6 +106,30 @@ std::vector<std::string> split_fields(const std::string& raw) {
   return out;
 }
 
+// Names and ranges of the 7 numbers of a vertex at one level.
+struct VertexFields {
+  const char* name[7];
+  double lo[7], hi[7];
+};
+const VertexFields kScreenVertex = {{"X", "Y", "Z", "R", "G", "B", "T"},
+                                    {-1e6, -1e6, 0, 0, 0, 0, 0},
+                                    {1e6, 1e6, 65535, 255, 255, 255, 1}};
+const VertexFields kThesisVertex = {{"x", "y", "z", "r", "g", "b", "t"},
+                                    {-1e3, -1e3, 0, 0, 0, 0, 0},
+                                    {1e3, 1e3, 1, 1, 1, 1, 1}};
+
+// Three vertices of 7 numbers each, starting at field `first`.
+Triangle read_triangle(const LineParser& p, size_t first, const VertexFields& f) {
+  Triangle t;
+  t.source_line = p.line();
+  for (int i = 0; i < 3; ++i) {
+    double c[7];
+    for (int k = 0; k < 7; ++k) c[k] = p.real_in(first + 7 * i + k, f.name[k], f.lo[k], f.hi[k]);
+    t.v[i] = Vertex{c[0], c[1], c[2], c[3], c[4], c[5], c[6]};
+  }
+  return t;
+}
+
 class TraceBuilder {
  public:
   TraceBuilder(const std::string& path, const Params& params) : params_(params) {
@@ -183,20 +207,7 @@ class TraceBuilder {
   void triangle(const LineParser& p) {
     require_level(p, TraceLevel::kTriangle);
     p.expect_count(21, "numbers (X Y Z R G B T for each of 3 vertices)");
-    Triangle t;
-    t.source_line = p.line();
-    for (int i = 0; i < 3; ++i) {
-      const size_t b = 1 + 7 * i;
-      Vertex& v = t.v[i];
-      v.x = p.real_in(b + 0, "X", -1e6, 1e6);
-      v.y = p.real_in(b + 1, "Y", -1e6, 1e6);
-      v.z = p.real_in(b + 2, "Z", 0, 65535);
-      v.r = p.real_in(b + 3, "R", 0, 255);
-      v.g = p.real_in(b + 4, "G", 0, 255);
-      v.b = p.real_in(b + 5, "B", 0, 255);
-      v.t = p.real_in(b + 6, "T", 0, 1);
-    }
-    current().triangles.push_back(t);
+    current().triangles.push_back(read_triangle(p, 1, kScreenVertex));
   }
 
   void format(const LineParser& p) {
@@ -308,20 +319,7 @@ class TraceBuilder {
     }
     if (p.size() != 21) p.fail("a thesis triangle is 21 numbers (x y z r g b t for 3 vertices), got " +
                                std::to_string(p.size()) + " fields");
-    Triangle t;
-    t.source_line = p.line();
-    for (int i = 0; i < 3; ++i) {
-      const size_t b = 7 * i;
-      Vertex& v = t.v[i];
-      v.x = p.real_in(b + 0, "x", -1e3, 1e3);
-      v.y = p.real_in(b + 1, "y", -1e3, 1e3);
-      v.z = p.real_in(b + 2, "z", 0, 1);
-      v.r = p.real_in(b + 3, "r", 0, 1);
-      v.g = p.real_in(b + 4, "g", 0, 1);
-      v.b = p.real_in(b + 5, "b", 0, 1);
-      v.t = p.real_in(b + 6, "t", 0, 1);
-    }
-    current().triangles.push_back(t);
+    current().triangles.push_back(read_triangle(p, 0, kThesisVertex));
   }
 
   void polygon(const LineParser& p) {
