@@ -20,7 +20,7 @@ module cost_shell_dda (
   logic [15:0] oz;
   logic [3:0] state;
   dda u_dda (
-      .clk_i, .rst_ni, .walk_fix_i(sr_q[0]), .pipelined_compare_i(sr_q[1]), .in_valid_i(sr_q[2]),
+      .clk_i, .rst_ni, .en_i(1'b1), .walk_fix_i(sr_q[0]), .pipelined_compare_i(sr_q[1]), .in_valid_i(sr_q[2]),
       .in_ready_o(in_ready), .x0_i(sr_q[3+:XY]), .y0_i(sr_q[3+XY+:XY]), .xmin_i(sr_q[3+2*XY+:XY]),
       .xmax_i(sr_q[3+3*XY+:XY]), .ymax_i(sr_q[3+4*XY+:XY]), .q_zero_i(sr_q[3+5*XY]), .q_k_i(sr_q[4+5*XY+:4]),
       .r_i(sr_q[8+5*XY+:C]), .r_dx_i(sr_q[8+5*XY+C+:C]), .r_dy_i(sr_q[8+5*XY+2*C+:C]),

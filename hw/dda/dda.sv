@@ -9,6 +9,7 @@
 module dda (
     input  logic clk_i,
     input  logic rst_ni,
+    input  logic en_i,  // clock enable: the DDA acts on enabled base ticks only (one DDA clock each)
     // Run-time options (config/girtd.json: dda.walk_fix, dda.xy_compare_pipelined)
     input  logic walk_fix_i,
     input  logic pipelined_compare_i,
@@ -140,7 +141,7 @@ module dda (
     after_wait_d = after_wait_q;
     walk_left_d = walk_left_q;
     first_d = first_q;
-    if (!stall) begin
+    if (!hold) begin
       unique case (state_q)
         S_IDLE: if (in_valid_i) begin
           op = girtd_pkg::OP_LOAD;
@@ -252,12 +253,15 @@ module dda (
   localparam int PIX_W = 10 + 10 + 8 + 8 + 8 + 9 + 16;
   logic [PIX_W-1:0] pipe_q[L];
   logic valid_q[L];
+  // A disabled tick freezes everything, like a stall, but is not counted as one.
+  logic hold;
   assign stall = valid_q[L-1] && !out_ready_i;
+  assign hold = stall || !en_i;
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       for (int i = 0; i < L; i++) valid_q[i] <= 1'b0;
-    end else if (!stall) begin
+    end else if (!hold) begin
       valid_q[0] <= emit;
       pipe_q[0] <= {x[9:0], y[9:0], r8, g8, b8, nf, z16};
       for (int i = 1; i < L; i++) begin
@@ -269,9 +273,9 @@ module dda (
 
   assign {out_x_o, out_y_o, out_r_o, out_g_o, out_b_o, out_nf_o, out_z_o} = pipe_q[L-1];
   assign out_valid_o = valid_q[L-1];
-  assign in_ready_o = state_q == S_IDLE && !stall;
-  assign active_o = state_q != S_IDLE && !stall;
-  assign stall_o = stall && state_q != S_IDLE;
+  assign in_ready_o = state_q == S_IDLE && !hold;
+  assign active_o = state_q != S_IDLE && !hold;
+  assign stall_o = en_i && stall && state_q != S_IDLE;
   assign state_o = state_q;
 
 `ifdef GIRTD_COVER

@@ -1,5 +1,6 @@
 #include "config/params.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -71,8 +72,15 @@ Params build(const json& j, const std::string& origin) {
     else if (omn == "invert_bits") p.one_minus_nf = OneMinusNf::kInvertBits;
     else throw InputError(origin, 0, "had.one_minus_nf must be \"exact\" or \"invert_bits\"");
     p.had_access_ns = j.at("had").at("access_ns").get<double>();
+    p.had_blend_extra_ns = j.at("had").at("blend_extra_ns").get<double>();
+    p.had_write_behind = j.at("had").at("write_behind").get<bool>();
+    p.had_prefetch = j.at("had").at("prefetch").get<bool>();
     p.vram_cycle_ns = j.at("vram").at("cycle_ns").get<double>();
+    p.vram_serial_ns = j.at("vram").at("serial_ns").get<double>();
+    p.vram_serial_transfers = j.at("vram").at("serial_transfers").get<int>();
+    p.base_tick_ns = j.at("timing").at("base_tick_ns").get<double>();
     p.fifo_dda_had_depth = j.at("fifo").at("dda_had_depth").get<int>();
+    p.fifo_max_depth = j.at("fifo").at("max_depth").get<int>();
     p.depth_clear = j.at("depth").at("clear").get<int>();
     p.depth_max_mapped = j.at("depth").at("max_mapped").get<int>();
     const json& th = j.at("thesis");
@@ -102,8 +110,16 @@ Params build(const json& j, const std::string& origin) {
     throw InputError(origin, 0, "nf.prom_frac_bits must be 1..min(8, norm_frac_bits)");
   if (p.screen_width != 1024 || p.screen_height != 1024)
     throw InputError(origin, 0, "GIRTD's frame is 1024 x 1024 (use a window for smaller pictures)");
-  if (p.dda_clock_ns <= 0 || p.had_access_ns <= 0 || p.vram_cycle_ns <= 0)
+  if (p.dda_clock_ns <= 0 || p.had_access_ns <= 0 || p.vram_cycle_ns <= 0 || p.base_tick_ns <= 0 ||
+      p.had_blend_extra_ns < 0 || p.vram_serial_ns < 0)
     throw InputError(origin, 0, "clock periods must be positive");
+  for (double ns : {p.dda_clock_ns, p.had_access_ns, p.had_blend_extra_ns, p.vram_cycle_ns, p.vram_serial_ns}) {
+    const double t = ns / p.base_tick_ns;
+    if (std::fabs(t - std::round(t)) > 1e-9 || t > 65535)
+      throw InputError(origin, 0, "every period must be a multiple of timing.base_tick_ns (at most 65535 ticks)");
+  }
+  if (p.fifo_dda_had_depth < 1 || p.fifo_dda_had_depth > p.fifo_max_depth)
+    throw InputError(origin, 0, "fifo.dda_had_depth must be 1..fifo.max_depth");
   p.source = j;
   return p;
 }

@@ -42,9 +42,19 @@ struct Params {
 
   OneMinusNf one_minus_nf;
   double had_access_ns;
+  double had_blend_extra_ns;  // multiplier + adder time of a blended pixel (§6)
+  bool had_write_behind;      // 5.2.2 improvements, off in the thesis' design
+  bool had_prefetch;
   double vram_cycle_ns;
+  double vram_serial_ns;      // serial-port transfer, used by the frame clear (§7)
+  int vram_serial_transfers;
+  double base_tick_ns;        // the RTL back end's common clock; every period is a multiple
 
   int fifo_dda_had_depth;
+  int fifo_max_depth;         // the RTL FIFO is built this deep; dda_had_depth is a run-time limit
+
+  // A period in base ticks (exact: build() checks the multiples).
+  int ticks(double ns) const { return static_cast<int>(ns / base_tick_ns + 0.5); }
   int depth_clear;
   int depth_max_mapped;
 

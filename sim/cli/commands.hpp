@@ -33,6 +33,7 @@ struct RegressArgs {
   uint32_t seed = 1;
   double stall = 0.3;               // back-pressure probability on every other triangle
   bool both_compare_modes = false;  // run ECL and TTL sequencing
+  bool dda_only = false;            // skip the whole-back-end RTL (FIFO, HAD, cache, VRAM)
   std::string config;
 };
 

@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   regress->add_option("--seed", rg.seed, "seed of the random triangles")->capture_default_str();
   regress->add_option("--stall", rg.stall, "back-pressure probability on every other triangle")->capture_default_str();
   regress->add_flag("--both-compare-modes", rg.both_compare_modes, "run same-cycle and pipelined X/Y compare");
+  regress->add_flag("--dda-only", rg.dda_only, "compare the DDA alone, not the whole RTL back end");
   regress->add_option("--config", rg.config, "JSON file merged over config/girtd.json");
 
   try {

@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
+#include "rtl/backend_rtl.hpp"
 #include "rtl/dda_regression.hpp"
 
 namespace girtd {
@@ -13,12 +14,13 @@ int run_regress(const RegressArgs& a) {
   Params p = load_params(a.config);
   std::vector<std::string> traces = a.traces;
   if (traces.empty() && a.random == 0) traces = traces_under("traces");
-  std::printf("%-44s %9s %10s %11s %9s  %s\n", "trace", "triangles", "pixels", "DDA clocks", "stalls", "result");
+  std::printf("%-44s %9s %10s %11s %9s %12s  %s\n", "trace", "triangles", "pixels", "DDA clocks", "stalls",
+              "back end us", "result");
   int passed = 0, failed = 0;
   auto report = [&](const RegressionRow& r) {
-    std::printf("%-44s %9llu %10llu %11llu %9llu  %s\n", r.name.c_str(), (unsigned long long)r.triangles,
+    std::printf("%-44s %9llu %10llu %11llu %9llu %12.1f  %s\n", r.name.c_str(), (unsigned long long)r.triangles,
                 (unsigned long long)r.pixels, (unsigned long long)r.clocks, (unsigned long long)r.stalls,
-                r.failure.empty() ? "pass" : "FAIL");
+                double(r.ticks) * p.base_tick_ns * 1e-3, r.failure.empty() ? "pass" : "FAIL");
     if (!r.failure.empty()) std::printf("    first difference: %s\n", r.failure.c_str());
     std::fflush(stdout);
     (r.failure.empty() ? passed : failed)++;
@@ -28,8 +30,10 @@ int run_regress(const RegressArgs& a) {
   for (bool pipelined : modes) {
     p.xy_compare_pipelined = pipelined;
     DdaRtl rtl(p);
-    for (const std::string& t : traces) report(regress_trace(t, p, rtl, a.stall));
-    if (a.random > 0) report(regress_random(a.random, a.seed, p, rtl, a.stall));
+    BackendRtl backend(p);
+    BackendRtl* whole = a.dda_only ? nullptr : &backend;
+    for (const std::string& t : traces) report(regress_trace(t, p, rtl, whole, a.stall));
+    if (a.random > 0) report(regress_random(a.random, a.seed, p, rtl, whole, a.stall));
   }
   std::printf("%d passed, %d failed\n", passed, failed);
   return failed ? 1 : 0;

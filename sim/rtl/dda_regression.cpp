@@ -9,6 +9,7 @@
 #include "dda/dda_preparer.hpp"
 #include "had/had.hpp"
 #include "io/trace_reader.hpp"
+#include "rtl/backend_rtl.hpp"
 #include "rtl/dda_compare.hpp"
 #include "workloads/random_triangles.hpp"
 
@@ -20,15 +21,18 @@ namespace {
 // Runs golden and RTL side by side over one frame's parameter sets.
 class FrameChecker {
  public:
-  FrameChecker(const Params& p, DdaRtl& rtl, double stall, uint32_t seed)
-      : golden_(p), rtl_(rtl), stall_(stall), seed_(seed),
+  FrameChecker(const Params& p, DdaRtl& rtl, BackendRtl* backend, double stall, uint32_t seed)
+      : golden_(p), rtl_(rtl), backend_(backend), stall_(stall), seed_(seed),
         fb_golden_(p.screen_width, p.screen_height, uint16_t(p.depth_clear)),
         fb_rtl_(p.screen_width, p.screen_height, uint16_t(p.depth_clear)),
-        had_golden_(fb_golden_, p.one_minus_nf), had_rtl_(fb_rtl_, p.one_minus_nf) {}
+        had_golden_(fb_golden_, p.one_minus_nf), had_rtl_(fb_rtl_, p.one_minus_nf) {
+    if (backend_) start_ = backend_->counters();
+  }
 
   void begin_frame(Rgb background) {
     fb_golden_.clear_back(background);
     fb_rtl_.clear_back(background);
+    if (backend_) backend_->begin_frame(background);
   }
 
   void check(const DdaParams& d, RegressionRow& row) {
@@ -49,6 +53,7 @@ class FrameChecker {
     }
     for (const Pixel& p : c.golden_pixels) had_golden_.update(p);
     for (const Pixel& p : c.rtl_pixels) had_rtl_.update(p);
+    if (backend_) backend_->draw(d);
   }
 
   void end_frame(RegressionRow& row) {
@@ -57,11 +62,36 @@ class FrameChecker {
     fb_rtl_.swap();
     if (fb_golden_.shown_bytes() != fb_rtl_.shown_bytes() || fb_golden_.z_plane() != fb_rtl_.z_plane())
       row.failure = "frame buffers differ";
+    if (backend_ && row.failure.empty()) check_backend(row);
+  }
+
+  // The RTL back end (DDA + FIFO + HAD + cache + VRAM) against the golden HAD:
+  // the frame bit for bit, and every pixel accounted for.
+  void check_backend(RegressionRow& row) {
+    backend_->end_frame();
+    const BackendCounters now = backend_->counters();
+    const HadCounts& g = had_golden_.counts();
+    const uint64_t generated = now.pixels_generated - start_.pixels_generated;
+    const uint64_t accounted = now.accounted() - start_.accounted();
+    row.ticks = now.ticks - start_.ticks;
+    if (accounted != generated) {
+      row.failure = "back end: generated " + std::to_string(generated) + " != written + blended + rejected + dropped " +
+                    std::to_string(accounted);
+    } else if (now.written - start_.written != g.written || now.blended - start_.blended != g.blended ||
+               now.z_rejected - start_.z_rejected != g.z_rejected || now.dropped - start_.dropped != g.dropped) {
+      row.failure = "back end: HAD counts differ from the golden HAD's";
+    } else if (backend_->shown_rgb() != fb_golden_.shown_bytes()) {
+      row.failure = "back end: shown frame differs from the golden HAD's";
+    } else if (backend_->z_plane() != fb_golden_.z_plane()) {
+      row.failure = "back end: Z buffer differs from the golden HAD's";
+    }
   }
 
  private:
   DdaEngine golden_;
   DdaRtl& rtl_;
+  BackendRtl* backend_;
+  BackendCounters start_;
   double stall_;
   uint32_t seed_;
   FrameBuffer fb_golden_, fb_rtl_;
@@ -83,7 +113,8 @@ std::vector<std::string> traces_under(const std::string& dir) {
   return out;
 }
 
-RegressionRow regress_trace(const std::string& path, const Params& p, DdaRtl& rtl, double stall) {
+RegressionRow regress_trace(const std::string& path, const Params& p, DdaRtl& rtl, BackendRtl* backend,
+                            double stall) {
   RegressionRow row;
   row.name = path;
   const Trace trace = read_trace(path, std::nullopt, p);
@@ -92,7 +123,7 @@ RegressionRow regress_trace(const std::string& path, const Params& p, DdaRtl& rt
   for (const TraceFrame& f : trace.frames)
     if (!is_hardware_q(f.settings.q))
       throw InputError(path, f.settings.q_line, "Q must be 0 or a power of two 1/16..8 for the RTL");
-  FrameChecker checker(p, rtl, stall, 1);
+  FrameChecker checker(p, rtl, backend, stall, 1);
   DdaPreparer prep(p);
   for (const TraceFrame& f : trace.frames) {
     checker.begin_frame(f.settings.background);
@@ -105,12 +136,13 @@ RegressionRow regress_trace(const std::string& path, const Params& p, DdaRtl& rt
   return row;
 }
 
-RegressionRow regress_random(int count, uint32_t seed, const Params& p, DdaRtl& rtl, double stall) {
+RegressionRow regress_random(int count, uint32_t seed, const Params& p, DdaRtl& rtl, BackendRtl* backend,
+                             double stall) {
   RegressionRow row;
   row.name = "random " + std::to_string(count) + " (seed " + std::to_string(seed) + ")";
   std::mt19937 rng(seed);
   const double qs[5] = {0, 0.5, 1, 1, 2};
-  FrameChecker checker(p, rtl, stall, seed);
+  FrameChecker checker(p, rtl, backend, stall, seed);
   DdaPreparer prep(p);
   checker.begin_frame(Rgb{});
   for (int n = 0; n < count && row.failure.empty(); ++n) {

@@ -1,25 +1,15 @@
 #include "rtl/dda_rtl.hpp"
 
 #include <stdexcept>
-#include <type_traits>
 
 #include "Vdda.h"
-#include "common/triangle_setup.hpp"
+#include "rtl/port_access.hpp"
 #include "verilated.h"
 #if VM_COVERAGE
 #include "verilated_cov.h"
 #endif
 
 namespace girtd {
-namespace {
-
-template <typename Port>
-void set_port(Port& port, int64_t value, int bits) {
-  const uint64_t mask = bits >= 64 ? ~uint64_t{0} : ((uint64_t{1} << bits) - 1);
-  port = static_cast<std::remove_reference_t<Port>>(static_cast<uint64_t>(value) & mask);
-}
-
-}  // namespace
 
 struct DdaRtl::Impl {
   const Params& params;
@@ -32,6 +22,7 @@ struct DdaRtl::Impl {
       ctx.randSeed(static_cast<int>(x_seed));
     }
     top = std::make_unique<Vdda>(&ctx);
+    top->en_i = 1;  // one DDA clock per tick: this harness drives the DDA alone
     top->walk_fix_i = p.walk_fix;
     top->pipelined_compare_i = p.xy_compare_pipelined;
     top->in_valid_i = 0;
@@ -50,31 +41,7 @@ struct DdaRtl::Impl {
     top->eval();
   }
 
-  void load_ports(const DdaParams& d) {
-    const int xy = params.xy_bits;
-    set_port(top->x0_i, d.x0, xy);
-    set_port(top->y0_i, d.y0, xy);
-    set_port(top->xmin_i, d.xmin, xy);
-    set_port(top->xmax_i, d.xmax, xy);
-    set_port(top->ymax_i, d.ymax, xy);
-    top->q_zero_i = d.q == 0;
-    set_port(top->q_k_i, d.q == 0 ? 0 : q_log2(d.q), 4);
-    const int cw = params.ep_color.total_bits(), tw = params.ep_t.total_bits(), zw = params.ep_z.total_bits(),
-              dw = params.ep_d.total_bits();
-    auto ep = [&](auto& v, auto& dx, auto& dy, const EpInit& e, int w) {
-      set_port(v, e.v, w);
-      set_port(dx, e.dx, w);
-      set_port(dy, e.dy, w);
-    };
-    ep(top->r_i, top->r_dx_i, top->r_dy_i, d.ep[kEpR], cw);
-    ep(top->g_i, top->g_dx_i, top->g_dy_i, d.ep[kEpG], cw);
-    ep(top->b_i, top->b_dx_i, top->b_dy_i, d.ep[kEpB], cw);
-    ep(top->t_i, top->t_dx_i, top->t_dy_i, d.ep[kEpT], tw);
-    ep(top->z_i, top->z_dx_i, top->z_dy_i, d.ep[kEpZ], zw);
-    ep(top->d1_i, top->d1_dx_i, top->d1_dy_i, d.ep[kEpD1], dw);
-    ep(top->d2_i, top->d2_dx_i, top->d2_dy_i, d.ep[kEpD2], dw);
-    ep(top->d3_i, top->d3_dx_i, top->d3_dy_i, d.ep[kEpD3], dw);
-  }
+  void load_ports(const DdaParams& d) { load_dda_ports(*top, d, params); }
 };
 
 DdaRtl::DdaRtl(const Params& p, uint32_t x_seed) : impl_(std::make_unique<Impl>(p, x_seed)) {}

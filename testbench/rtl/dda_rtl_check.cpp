@@ -5,14 +5,20 @@
 // point of hw/dda/dda.sv (every state, both walk directions, all 16 rows of
 // the U decoder) was never hit.
 //
-//   dda_rtl_check --seed S [--random N] [--coverage FILE] [TRACE...]
+// With --backend the whole back end (FIFO, HAD, cache, VRAM) runs too, in
+// its check build, and its frames must equal the golden HAD's.
+//
+//   dda_rtl_check --seed S [--random N] [--coverage FILE] [--backend] [TRACE|DIR...]
 #include <cstdio>
+#include <algorithm>
 #include <cstdlib>
+#include <memory>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "common/input_error.hpp"
+#include "rtl/backend_rtl.hpp"
 #include "rtl/dda_regression.hpp"
 
 namespace {
@@ -57,12 +63,14 @@ int main(int argc, char** argv) {
   uint32_t seed = 1;
   int random = 0;
   std::string coverage;
+  bool with_backend = false;
   std::vector<std::string> traces;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--seed" && i + 1 < argc) seed = static_cast<uint32_t>(std::atol(argv[++i]));
     else if (a == "--random" && i + 1 < argc) random = std::atoi(argv[++i]);
     else if (a == "--coverage" && i + 1 < argc) coverage = argv[++i];
+    else if (a == "--backend") with_backend = true;
     else traces.push_back(a);
   }
   int passed = 0, failed = 0;
@@ -82,9 +90,11 @@ int main(int argc, char** argv) {
       p.xy_compare_pipelined = pipelined;
       keep.push_back(std::make_unique<DdaRtl>(p, seed));
       last = keep.back().get();
+      std::unique_ptr<BackendRtl> backend;
+      if (with_backend) backend = std::make_unique<BackendRtl>(p, seed);
       std::vector<RegressionRow> rows;
-      for (const std::string& t : expanded) rows.push_back(regress_trace(t, p, *last, 0.3));
-      if (random > 0) rows.push_back(regress_random(random, seed, p, *last, 0.3));
+      for (const std::string& t : expanded) rows.push_back(regress_trace(t, p, *last, backend.get(), 0.3));
+      if (random > 0) rows.push_back(regress_random(random, seed, p, *last, backend.get(), 0.3));
       for (const RegressionRow& r : rows) {
         std::printf("%-40s %s %8llu triangles %10llu pixels  %s\n", r.name.c_str(), pipelined ? "TTL" : "ECL",
                     (unsigned long long)r.triangles, (unsigned long long)r.pixels, r.failure.empty() ? "pass" : "FAIL");

@@ -1,0 +1,115 @@
+// GIRTD's back end as one RTL top (§4-§7): DDA -> FIFO -> HAD (+ cache) ->
+// VRAM. Everything runs on one base tick (config timing.base_tick_ns, 5 ns);
+// the DDA acts on every `dda_period_ticks_i`-th tick (35 ns = 7), the HAD
+// counts its access and blend times and the VRAM its cycles in ticks, all
+// run-time inputs. The harness loads parameter sets and drives the frame:
+// clear (serial port), triangles, flush (cache page back to VRAM), swap.
+module girtd_backend (
+    input  logic clk_i,
+    input  logic rst_ni,
+    // Timing and options (run-time)
+    input  logic [7:0]  dda_period_ticks_i,
+    input  logic [15:0] had_access_ticks_i,
+    input  logic [15:0] had_blend_ticks_i,
+    input  logic [15:0] vram_cycle_ticks_i,
+    input  logic [23:0] clear_ticks_i,
+    input  logic [$clog2(girtd_pkg::FIFO_MAX_DEPTH + 1)-1:0] fifo_limit_i,
+    input  logic        write_behind_i,
+    input  logic        one_minus_exact_i,
+    input  logic        walk_fix_i,
+    input  logic        pipelined_compare_i,
+    // Parameter set of one triangle (as the dda top)
+    input  logic                                 in_valid_i,
+    output logic                                 in_ready_o,
+    input  logic [girtd_pkg::XY_W-1:0]           x0_i, y0_i, xmin_i, xmax_i, ymax_i,
+    input  logic                                 q_zero_i,
+    input  logic signed [3:0]                    q_k_i,
+    input  logic signed [girtd_pkg::COLOR_W-1:0] r_i, r_dx_i, r_dy_i, g_i, g_dx_i, g_dy_i, b_i, b_dx_i, b_dy_i,
+    input  logic signed [girtd_pkg::T_W-1:0]     t_i, t_dx_i, t_dy_i,
+    input  logic signed [girtd_pkg::Z_W-1:0]     z_i, z_dx_i, z_dy_i,
+    input  logic signed [girtd_pkg::D_W-1:0]     d1_i, d1_dx_i, d1_dy_i, d2_i, d2_dx_i, d2_dy_i,
+    input  logic signed [girtd_pkg::D_W-1:0]     d3_i, d3_dx_i, d3_dy_i,
+    // Frame control
+    input  logic        clear_i,
+    input  logic [23:0] background_i,
+    input  logic        flush_i,
+    input  logic        swap_i,
+    output logic        idle_o,  // DDA idle, FIFO empty, HAD idle, VRAM free
+    output logic        front_o,
+    // Counters
+    output logic [47:0] dda_clocks_o,     // DDA clocks spent on triangles
+    output logic [47:0] dda_wait_ticks_o, // DDA clocks lost waiting on a full FIFO (in ticks)
+    output logic [31:0] pixels_generated_o,
+    output logic [31:0] written_o, blended_o, z_rejected_o, dropped_o, page_misses_o,
+    output logic [47:0] had_busy_ticks_o, had_vram_wait_ticks_o,
+    output logic [5:0]  fifo_max_o
+);
+  localparam int CW = $clog2(girtd_pkg::FIFO_MAX_DEPTH + 1);
+
+  // DDA clock enable: one tick in dda_period_ticks_i.
+  logic [7:0] dda_tick_q;
+  logic dda_en;
+  assign dda_en = dda_tick_q == '0;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni || dda_tick_q + 1'b1 >= dda_period_ticks_i) dda_tick_q <= '0;
+    else dda_tick_q <= dda_tick_q + 1'b1;
+  end
+
+  logic out_valid, fifo_full, fifo_empty, fifo_pop, dda_active, dda_stall;
+  logic [9:0] ox, oy;
+  logic [7:0] orr, og, ob;
+  logic [8:0] onf;
+  logic [15:0] oz;
+  logic [3:0] dda_state;
+  dda u_dda (
+      .clk_i, .rst_ni, .en_i(dda_en), .walk_fix_i, .pipelined_compare_i, .in_valid_i, .in_ready_o,
+      .x0_i, .y0_i, .xmin_i, .xmax_i, .ymax_i, .q_zero_i, .q_k_i,
+      .r_i, .r_dx_i, .r_dy_i, .g_i, .g_dx_i, .g_dy_i, .b_i, .b_dx_i, .b_dy_i, .t_i, .t_dx_i, .t_dy_i,
+      .z_i, .z_dx_i, .z_dy_i, .d1_i, .d1_dx_i, .d1_dy_i, .d2_i, .d2_dx_i, .d2_dy_i, .d3_i, .d3_dx_i, .d3_dy_i,
+      .out_valid_o(out_valid), .out_ready_i(!fifo_full), .out_x_o(ox), .out_y_o(oy), .out_r_o(orr),
+      .out_g_o(og), .out_b_o(ob), .out_nf_o(onf), .out_z_o(oz), .active_o(dda_active), .stall_o(dda_stall),
+      .state_o(dda_state));
+
+  logic push;
+  logic [68:0] fifo_data;
+  logic [CW-1:0] fifo_count;
+  assign push = dda_en && out_valid && !fifo_full;
+  pixel_fifo #(.W(69), .DEPTH(girtd_pkg::FIFO_MAX_DEPTH)) u_fifo (
+      .clk_i, .rst_ni, .limit_i(fifo_limit_i), .push_i(push), .data_i({ox, oy, orr, og, ob, onf, oz}),
+      .full_o(fifo_full), .pop_i(fifo_pop), .data_o(fifo_data), .empty_o(fifo_empty), .count_o(fifo_count));
+
+  logic vram_req, vram_we, vram_busy, vram_done, had_idle;
+  logic [15:0] vram_page;
+  logic [16*40-1:0] vram_wdata, vram_rdata;
+  had u_had (
+      .clk_i, .rst_ni, .access_ticks_i(had_access_ticks_i), .blend_ticks_i(had_blend_ticks_i),
+      .one_minus_exact_i, .write_behind_i, .fifo_empty_i(fifo_empty), .fifo_data_i(fifo_data),
+      .fifo_pop_o(fifo_pop), .vram_req_o(vram_req), .vram_we_o(vram_we), .vram_page_o(vram_page),
+      .vram_wdata_o(vram_wdata), .vram_rdata_i(vram_rdata), .vram_busy_i(vram_busy), .vram_done_i(vram_done),
+      .flush_i, .idle_o(had_idle), .written_o, .blended_o, .z_rejected_o, .dropped_o, .page_misses_o,
+      .busy_ticks_o(had_busy_ticks_o), .vram_wait_ticks_o(had_vram_wait_ticks_o));
+
+  vram u_vram (
+      .clk_i, .rst_ni, .cycle_ticks_i(vram_cycle_ticks_i), .clear_ticks_i, .req_i(vram_req), .we_i(vram_we),
+      .page_i(vram_page), .wdata_i(vram_wdata), .rdata_o(vram_rdata), .busy_o(vram_busy), .done_o(vram_done),
+      .clear_i, .background_i, .swap_i, .front_o);
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      dda_clocks_o <= '0;
+      dda_wait_ticks_o <= '0;
+      pixels_generated_o <= '0;
+      fifo_max_o <= '0;
+    end else begin
+      if (dda_active) dda_clocks_o <= dda_clocks_o + 1'b1;
+      if (dda_stall) dda_wait_ticks_o <= dda_wait_ticks_o + 48'(dda_period_ticks_i);
+      if (push) pixels_generated_o <= pixels_generated_o + 1'b1;
+      if (6'(fifo_count) > fifo_max_o) fifo_max_o <= 6'(fifo_count);
+    end
+  end
+
+  assign idle_o = in_ready_o && !out_valid && dda_state == 4'd8 && fifo_empty && had_idle && !vram_busy;
+
+  logic unused;
+  assign unused = ^{dda_state};
+endmodule

@@ -1,0 +1,95 @@
+// Video memory (4.2.11.4, 5.2.2): 1M x 64 bits = two RGB buffers and one Z
+// per pixel, on 16 boards (banks = X[3:0]), so one random-port cycle moves a
+// whole 16-pixel page. Behavioural: the array is read and written at the end
+// of a cycle of `cycle_ticks_i`; the frame clear goes through the serial port
+// and takes `clear_ticks_i`. The array is public for the testbench backdoor
+// and kept out of waveforms.
+// Word: [63:40] RGB buffer 0, [39:16] RGB buffer 1, [15:0] Z.
+module vram (
+    input  logic            clk_i,
+    input  logic            rst_ni,
+    input  logic [15:0]     cycle_ticks_i,
+    input  logic [23:0]     clear_ticks_i,
+    // Random port: one page per request
+    input  logic            req_i,
+    input  logic            we_i,
+    input  logic [15:0]     page_i,
+    input  logic [16*40-1:0] wdata_i,  // per pixel {back R, G, B, Z}
+    output logic [16*40-1:0] rdata_o,
+    output logic            busy_o,   // no request can be taken this tick
+    output logic            done_o,   // the tick a page operation ends (a fetch's data is valid)
+    // Frame control
+    input  logic            clear_i,  // back buffer <- background, Z <- FFFF
+    input  logic [23:0]     background_i,
+    input  logic            swap_i,
+    output logic            front_o   // the buffer shown: 0 = bits 63:40
+);
+  logic [63:0] mem[1 << 20]  /*verilator public*/;
+  logic [23:0] left_q;  // ticks left in the current operation
+  logic busy_q, we_q, front_q, clearing_q;
+  logic [15:0] page_q;
+  logic [16*40-1:0] wdata_q;
+  logic [23:0] bg_q;
+  logic finishing;
+
+  // An operation ends on the tick its count reaches 1; a new one can be
+  // accepted on that same tick, so back-to-back cycles leave no gap.
+  assign finishing = busy_q && left_q == 24'd1;
+  assign busy_o = busy_q && !finishing;
+  assign done_o = finishing && !clearing_q;
+  assign front_o = front_q;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      busy_q <= 1'b0;
+      front_q <= 1'b0;
+      clearing_q <= 1'b0;
+      left_q <= '0;
+    end else begin
+      if (swap_i) front_q <= !front_q;
+      if (busy_q) left_q <= left_q - 1'b1;
+      if (finishing) begin
+        busy_q <= 1'b0;
+        clearing_q <= 1'b0;
+      end
+      if (!busy_o && clear_i) begin
+        busy_q <= 1'b1;
+        clearing_q <= 1'b1;
+        bg_q <= background_i;
+        left_q <= clear_ticks_i == 0 ? 24'd1 : clear_ticks_i;
+      end else if (!busy_o && req_i) begin
+        busy_q <= 1'b1;
+        we_q <= we_i;
+        page_q <= page_i;
+        wdata_q <= wdata_i;
+        left_q <= cycle_ticks_i == 0 ? 24'd1 : {8'd0, cycle_ticks_i};
+      end
+    end
+  end
+
+  // The array itself: behavioural, written at the end of an operation. Blocking
+  // writes inside loops (Verilator cannot schedule delayed ones to an array in
+  // a loop); the array is only read combinationally, outside this block.
+  /* verilator lint_off BLKSEQ */
+  always_ff @(posedge clk_i) begin
+    if (rst_ni && finishing) begin
+      if (clearing_q) begin
+        for (int a = 0; a < (1 << 20); a++)
+          mem[a] = front_q ? {bg_q, mem[a][39:16], 16'hFFFF} : {mem[a][63:40], bg_q, 16'hFFFF};
+      end else if (we_q) begin
+        for (int i = 0; i < 16; i++) begin
+          if (front_q) mem[{page_q, 4'(i)}] = {wdata_q[i*40+16+:24], mem[{page_q, 4'(i)}][39:16], wdata_q[i*40+:16]};
+          else mem[{page_q, 4'(i)}] = {mem[{page_q, 4'(i)}][63:40], wdata_q[i*40+16+:24], wdata_q[i*40+:16]};
+        end
+      end
+    end
+  end
+  /* verilator lint_on BLKSEQ */
+
+  // Read data of the page being fetched: the back buffer and Z.
+  for (genvar i = 0; i < 16; i++) begin : g_read
+    logic [63:0] word;
+    assign word = mem[{page_q, 4'(i)}];
+    assign rdata_o[i*40+:40] = front_q ? {word[63:40], word[15:0]} : {word[39:16], word[15:0]};
+  end
+endmodule

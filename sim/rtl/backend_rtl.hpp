@@ -1,0 +1,53 @@
+// The Verilated back end (hw/backend: DDA -> FIFO -> HAD + cache -> VRAM)
+// driven on its base tick from C++: frames are cleared through the serial
+// port, triangles fed to the DDA's parameter port, the cache flushed and the
+// buffers swapped; the shown buffer and Z are read through a backdoor.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "common/types.hpp"
+#include "config/params.hpp"
+#include "dda/dda_params.hpp"
+
+namespace girtd {
+
+struct BackendCounters {
+  uint64_t ticks = 0;              // base ticks since reset
+  uint64_t dda_clocks = 0;         // DDA clocks on triangles
+  uint64_t dda_wait_ticks = 0;     // DDA waiting on a full FIFO
+  uint64_t pixels_generated = 0;   // pixels the DDA pushed into the FIFO
+  uint64_t written = 0, blended = 0, z_rejected = 0, dropped = 0;
+  uint64_t page_misses = 0;
+  uint64_t had_busy_ticks = 0, had_vram_wait_ticks = 0;
+  int fifo_max = 0;
+  uint64_t accounted() const { return written + blended + z_rejected + dropped; }
+};
+
+class BackendRtl {
+ public:
+  // `x_seed` != 0 randomizes X/uninitialized state (meaningful in the check build).
+  explicit BackendRtl(const Params& p, uint32_t x_seed = 0);
+  ~BackendRtl();
+  BackendRtl(const BackendRtl&) = delete;
+  BackendRtl& operator=(const BackendRtl&) = delete;
+
+  void begin_frame(Rgb background);  // clear the back buffer and Z (serial port)
+  void draw(const DdaParams& d);     // hand one parameter set to the DDA
+  void end_frame();                  // drain, write the cache page back, swap
+
+  BackendCounters counters() const;
+  // The shown buffer (1024 x 1024 x 3 bytes) and Z, through the backdoor.
+  std::vector<uint8_t> shown_rgb() const;
+  std::vector<uint16_t> z_plane() const;
+
+ private:
+  void tick();
+  void wait_idle();
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace girtd
