@@ -56,7 +56,7 @@ void BackendRtl::tick() {
   ++impl_->ticks;
 }
 
-void BackendRtl::wait_idle() {
+void BackendRtl::drain() {
   Vgirtd_backend& t = *impl_->top;
   for (uint64_t guard = 0;; ++guard) {
     t.clk_i = 0;
@@ -69,12 +69,12 @@ void BackendRtl::wait_idle() {
 
 void BackendRtl::begin_frame(Rgb bg) {
   Vgirtd_backend& t = *impl_->top;
-  wait_idle();
+  drain();
   t.background_i = (uint32_t(bg.r) << 16) | (uint32_t(bg.g) << 8) | bg.b;
   t.clear_i = 1;
   tick();
   t.clear_i = 0;
-  wait_idle();
+  drain();
 }
 
 void BackendRtl::draw(const DdaParams& d) {
@@ -94,12 +94,12 @@ void BackendRtl::draw(const DdaParams& d) {
 
 void BackendRtl::end_frame() {
   Vgirtd_backend& t = *impl_->top;
-  wait_idle();
+  drain();
   t.flush_i = 1;
   tick();
   t.flush_i = 0;
   tick();
-  wait_idle();
+  drain();
   t.swap_i = 1;
   tick();
   t.swap_i = 0;

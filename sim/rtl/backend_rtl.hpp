@@ -37,6 +37,7 @@ class BackendRtl {
   void begin_frame(Rgb background);  // clear the back buffer and Z (serial port)
   void draw(const DdaParams& d);     // hand one parameter set to the DDA
   void end_frame();                  // drain, write the cache page back, swap
+  void drain();                      // clock until DDA, FIFO, HAD and VRAM are idle
 
   BackendCounters counters() const;
   // The shown buffer (1024 x 1024 x 3 bytes) and Z, through the backdoor.
@@ -45,7 +46,6 @@ class BackendRtl {
 
  private:
   void tick();
-  void wait_idle();
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
