@@ -4,6 +4,29 @@
 #include <unordered_map>
 
 namespace girtd {
+namespace {
+
+// Insertion sort (adjacent compare-and-swap) that gives up after `budget`
+// comparisons; true when it finished.
+template <typename Farther>
+bool insertion_sort(std::vector<SortItem>& v, Farther farther, uint64_t budget) {
+  uint64_t used = 0;
+  for (size_t i = 1; i < v.size(); ++i)
+    for (size_t j = i; j > 0; --j) {
+      if (used++ == budget) return false;
+      if (!farther(v[j], v[j - 1])) break;
+      std::swap(v[j], v[j - 1]);
+    }
+  return true;
+}
+
+}  // namespace
+
+uint64_t coherent_budget(size_t n) {
+  uint64_t log2n = 0;
+  while ((uint64_t{1} << log2n) < n) ++log2n;
+  return static_cast<uint64_t>(n) * log2n + n;
+}
 
 void DepthSorter::sort(std::vector<SortItem>& items) {
   auto farther = [&](const SortItem& a, const SortItem& b) {
@@ -22,16 +45,16 @@ void DepthSorter::sort(std::vector<SortItem>& items) {
     ordered.push_back(items[it->second]);
   }
   // Less than half known from last frame: coherence does not pay, sort afresh.
-  const bool coherent = !ordered.empty() && 2 * ordered.size() >= items.size();
-  if (!coherent) {
-    ++full_sorts_;
-    std::stable_sort(items.begin(), items.end(), farther);
-  } else {
+  bool sorted = false;
+  if (!ordered.empty() && 2 * ordered.size() >= items.size()) {
     for (size_t i = 0; i < items.size(); ++i)
       if (!taken[i]) ordered.push_back(items[i]);
-    for (size_t i = 1; i < ordered.size(); ++i)
-      for (size_t j = i; j > 0 && farther(ordered[j], ordered[j - 1]); --j) std::swap(ordered[j], ordered[j - 1]);
-    items.swap(ordered);
+    sorted = insertion_sort(ordered, farther, coherent_budget(ordered.size()));
+    if (sorted) items.swap(ordered);
+  }
+  if (!sorted) {
+    ++full_sorts_;
+    std::stable_sort(items.begin(), items.end(), farther);
   }
   previous_.clear();
   for (const SortItem& s : items) previous_.push_back(s.id);

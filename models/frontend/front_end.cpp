@@ -6,6 +6,7 @@
 
 #include "common/triangle_setup.hpp"
 #include "frontend/depth_clip.hpp"
+#include "frontend/polygon_shape.hpp"
 #include "frontend/triangulator.hpp"
 #include "frontend/vertex_lighting.hpp"
 #include "frontend/vertex_normals.hpp"
@@ -68,6 +69,10 @@ std::vector<FrontTriangle> FrontEnd::run_frame(const WorldFrame& frame, const Wi
   for (size_t i = 0; i < frame.polygons.size(); ++i) {
     const WorldPolygon& poly = frame.polygons[i];
     ++counts_.polygons;
+    if (has_no_area(poly.p)) {  // decided in world space, before culling: no area has no facing
+      ++counts_.degenerate_polygons;
+      continue;
+    }
     if (frame.cull_back_faces && is_back_face(poly, cam.centre)) {
       ++counts_.culled;
       continue;
@@ -83,8 +88,7 @@ std::vector<FrontTriangle> FrontEnd::run_frame(const WorldFrame& frame, const Wi
       ++counts_.clipped_away;
       continue;
     }
-    if (kept.size() != cv.size() || std::any_of(cv.begin(), cv.end(), [&](const CameraVertex& v) { return v.s.z <= c; }))
-      ++counts_.clipped;
+    if (std::any_of(cv.begin(), cv.end(), [&](const CameraVertex& v) { return v.s.z <= c; })) ++counts_.clipped;
     for (const CameraVertex& v : kept) {
       if (v.created) {
         created_any = true;
@@ -106,14 +110,15 @@ std::vector<FrontTriangle> FrontEnd::run_frame(const WorldFrame& frame, const Wi
   std::vector<FrontTriangle> out;
   std::vector<SortItem> order;
   for (const ClippedPolygon& cp : clipped) {
-    std::vector<CameraVertex> v;
-    for (const CameraVertex& x : cp.v)
-      if (v.empty() || x.s.x != v.back().s.x || x.s.y != v.back().s.y || x.s.z != v.back().s.z) v.push_back(x);
-    while (v.size() > 1 && v.front().s.x == v.back().s.x && v.front().s.y == v.back().s.y && v.front().s.z == v.back().s.z)
-      v.pop_back();
+    // The clip may make a corner twice (a vertex on Zs = C) or a sliver
+    // with no area left: the same tests as for the input.
+    std::vector<CameraVertex> v = cp.v;
+    drop_repeated_corners(v, [](const CameraVertex& a, const CameraVertex& b) {
+      return a.s.x == b.s.x && a.s.y == b.s.y && a.s.z == b.s.z;
+    });
     std::vector<Vec3> s;
     for (const CameraVertex& x : v) s.push_back(x.s);
-    if (v.size() < 3 || length(newell_normal(s)) == 0) {
+    if (has_no_area(s)) {
       ++counts_.degenerate_polygons;
       continue;
     }
@@ -126,8 +131,8 @@ std::vector<FrontTriangle> FrontEnd::run_frame(const WorldFrame& frame, const Wi
 
     std::vector<Vertex> screen;
     for (const CameraVertex& x : v) {
-      const double xp = x.s.x / x.s.z * cam.d_over_s, yp = x.s.y / x.s.z * cam.d_over_s;
-      screen.push_back({screen_.x(xp), screen_.y(yp), depth.zp(x.s.z), x.r, x.g, x.b, x.t});
+      const PlanePoint p = project(x.s, cam.d_over_s);
+      screen.push_back({screen_.x(p.xp), screen_.y(p.yp), depth.zp(x.s.z), x.r, x.g, x.b, x.t});
     }
     for (size_t k = 0; k < tr.triangles.size(); ++k) {
       const TriangleIndices& ti = tr.triangles[k];

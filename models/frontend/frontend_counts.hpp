@@ -11,7 +11,7 @@ struct FrontendCounts {
   uint64_t culled = 0;                   // back faces removed (culling on)
   uint64_t clipped = 0;                  // polygons cut by the depth clip (some vertex at Zs <= C)
   uint64_t clipped_away = 0;             // polygons wholly at Zs <= C: dropped
-  uint64_t degenerate_polygons = 0;      // fewer than 3 distinct vertices or no area: dropped
+  uint64_t degenerate_polygons = 0;      // no area (polygon_shape.hpp), at input or after the clip: dropped
   uint64_t non_planar = 0;               // polygons off their Newell plane by > 1e-3 of their radius
   uint64_t concave = 0;                  // polygons with at least one concave vertex
   uint64_t ear_clipped = 0;              // polygons with two or more (ear clipping)

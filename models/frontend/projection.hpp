@@ -9,7 +9,17 @@
 // Z across the screen is exact.
 #pragma once
 
+#include "frontend/vec3.hpp"
+
 namespace girtd {
+
+// A camera-space point (Zs > 0) on the projection plane: -1..1 across it.
+struct PlanePoint {
+  double xp = 0, yp = 0;
+};
+
+// Xp = Xs/Zs * D/S, Yp = Ys/Zs * D/S.
+inline PlanePoint project(const Vec3& s, double d_over_s) { return {s.x / s.z * d_over_s, s.y / s.z * d_over_s}; }
 
 struct ScreenMap {
   int width = 1024, height = 1024;

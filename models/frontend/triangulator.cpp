@@ -1,5 +1,6 @@
 #include "frontend/triangulator.hpp"
 
+#include <cmath>
 #include <cstdlib>
 
 namespace girtd {
@@ -15,6 +16,16 @@ bool in_triangle(const Point2& q, const Point2& a, const Point2& b, const Point2
 }
 
 bool same_point(const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; }
+
+// The turn at corner b (from a, to c) seen with orientation o: +1 convex,
+// -1 concave, 0 straight (within kStraightTolerance of |e1||e2|, so that
+// rounding does not make a straight corner concave).
+int turn(const Point2& a, const Point2& b, const Point2& c, double o) {
+  const double z = cross3(a, b, c) * o;
+  const double e1 = std::hypot(b.x - a.x, b.y - a.y), e2 = std::hypot(c.x - b.x, c.y - b.y);
+  if (std::fabs(z) <= kStraightTolerance * e1 * e2) return 0;
+  return z > 0 ? 1 : -1;
+}
 
 void fan(int from, int n, std::vector<TriangleIndices>& out) {
   for (int k = 1; k + 1 < n; ++k) out.push_back({{from, (from + k) % n, (from + k + 1) % n}, {}});
@@ -36,7 +47,7 @@ bool ear_clip(const std::vector<Point2>& p, double o, std::vector<TriangleIndice
       const Point2& a = p[idx[(k + m - 1) % m]];
       const Point2& b = p[idx[k]];
       const Point2& c = p[idx[(k + 1) % m]];
-      if (cross3(a, b, c) * o <= 0) continue;  // concave or straight: not an ear
+      if (turn(a, b, c, o) <= 0) continue;  // concave or straight: not an ear
       bool empty = true;
       for (size_t j = 0; j < m && empty; ++j) {
         const Point2& q = p[idx[j]];
@@ -52,7 +63,7 @@ bool ear_clip(const std::vector<Point2>& p, double o, std::vector<TriangleIndice
     // A vertex on a straight line adds no area: dropping it (a zero-area
     // triangle, which the preparer discards) keeps the rest correct.
     for (size_t k = 0; k < m && !clipped; ++k)
-      if (cross3(p[idx[(k + m - 1) % m]], p[idx[k]], p[idx[(k + 1) % m]]) == 0) {
+      if (turn(p[idx[(k + m - 1) % m]], p[idx[k]], p[idx[(k + 1) % m]], o) == 0) {
         clip_at(k);
         clipped = true;
       }
@@ -73,7 +84,7 @@ Triangulation triangulate(const std::vector<Point2>& p) {
   const double o = area2 >= 0 ? 1.0 : -1.0;
   int concave_at = -1;
   for (int i = 0; i < n; ++i)
-    if (cross3(p[(i + n - 1) % n], p[i], p[(i + 1) % n]) * o < 0) {
+    if (turn(p[(i + n - 1) % n], p[i], p[(i + 1) % n], o) < 0) {
       ++t.concave_vertices;
       concave_at = i;
     }

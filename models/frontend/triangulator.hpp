@@ -4,7 +4,10 @@
 //                         star-shaped from that vertex)
 //   more               -> ear clipping (the thesis' "special processing")
 // A vertex is concave when the z of the cross product of its two edges has
-// the sign opposite to the polygon's area. Works on 2D points: the front end
+// the sign opposite to the polygon's area, and straight (neither convex nor
+// concave: not counted, never an ear) when that z is within
+// kStraightTolerance of |e1||e2| (the sine of the turn), which rounding
+// cannot leave. Works on 2D points: the front end
 // passes the polygon projected onto its own (Newell) plane, so a non-planar
 // polygon is split the same way from every viewpoint.
 #pragma once
@@ -13,6 +16,8 @@
 #include <vector>
 
 namespace girtd {
+
+inline constexpr double kStraightTolerance = 1e-9;
 
 struct Point2 {
   double x = 0, y = 0;

@@ -3,6 +3,8 @@
 #include <map>
 #include <tuple>
 
+#include "frontend/polygon_shape.hpp"
+
 namespace girtd {
 
 Vec3 newell_normal(const std::vector<Vec3>& p) {
@@ -23,7 +25,7 @@ std::vector<std::vector<Vec3>> vertex_normals(const std::vector<WorldPolygon>& p
   std::vector<Vec3> face(polygons.size());
   for (size_t i = 0; i < polygons.size(); ++i) {
     const WorldPolygon& poly = polygons[i];
-    face[i] = normalized(newell_normal(poly.p));
+    face[i] = has_no_area(poly.p) ? Vec3{} : normalized(newell_normal(poly.p));  // no area: no direction
     for (const Vec3& v : poly.p) {
       Vec3& s = sum[Key{poly.surface, v.x, v.y, v.z}];
       s = s + face[i];

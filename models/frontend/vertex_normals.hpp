@@ -16,7 +16,8 @@ namespace girtd {
 Vec3 newell_normal(const std::vector<Vec3>& p);
 
 // normals[i][k] is the unit normal of vertex k of polygon i. The average
-// weighs each polygon's unit normal equally (the thesis' "average").
+// weighs each polygon's unit normal equally (the thesis' "average"); a
+// polygon without area (polygon_shape.hpp) adds nothing to it.
 std::vector<std::vector<Vec3>> vertex_normals(const std::vector<WorldPolygon>& polygons);
 
 }  // namespace girtd

@@ -2,25 +2,9 @@
 
 #include <cmath>
 
+#include "frontend/rotation.hpp"
+
 namespace girtd {
-namespace {
-
-constexpr double kDegToRad = M_PI / 180.0;
-
-Vec3 rot_x(Vec3 v, double a) {
-  const double c = std::cos(a), s = std::sin(a);
-  return {v.x, c * v.y - s * v.z, s * v.y + c * v.z};
-}
-Vec3 rot_y(Vec3 v, double a) {
-  const double c = std::cos(a), s = std::sin(a);
-  return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
-}
-Vec3 rot_z(Vec3 v, double a) {
-  const double c = std::cos(a), s = std::sin(a);
-  return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
-}
-
-}  // namespace
 
 Vec3 to_camera_space(const Camera& c, Vec3 world) {
   const Vec3 d = world - c.centre;
@@ -42,7 +26,7 @@ std::optional<Camera> camera_look_at(Vec3 eye, Vec3 target, Vec3 up, double fov_
 
 Camera camera_from_angles(Vec3 centre, double yaw_deg, double pitch_deg, double roll_deg, double fov_deg) {
   auto rotate = [&](Vec3 v) {
-    return rot_y(rot_x(rot_z(v, roll_deg * kDegToRad), pitch_deg * kDegToRad), yaw_deg * kDegToRad);
+    return rotate_y(rotate_x(rotate_z(v, roll_deg * kDegToRad), pitch_deg * kDegToRad), yaw_deg * kDegToRad);
   };
   Camera c;
   c.centre = centre;

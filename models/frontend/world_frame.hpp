@@ -14,6 +14,10 @@ namespace girtd {
 inline constexpr int kCreSteps = 7;
 inline constexpr double kCreStepDeg = 15.0;
 
+// The specular exponent's range, the thesis' n = 1 (matte) .. 200 (mirror).
+inline constexpr double kMinSpecularExponent = 1;
+inline constexpr double kMaxSpecularExponent = 200;
+
 // A surface's material (§3 lighting). Polygons of one surface share vertex
 // normals; a vertex on two surfaces keeps one normal per surface.
 struct Surface {

@@ -56,6 +56,7 @@ LoadedInput load_input(const RenderArgs& a, const Params& params) {
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext == ".json") in.polygons = read_scene(a.input, params);
     else if (is_model_file(a.input)) in.polygons = scene_from_model(a.input, params);
+    else reject_other_model_formats(a.input);
   }
   if (!in.polygons) {
     Trace t = read_trace(a.input, level, params);

@@ -13,10 +13,11 @@
 #include <fstream>
 #include <map>
 #include <regex>
-#include <sstream>
 #include <tuple>
 
 #include "common/input_error.hpp"
+#include "frontend/polygon_shape.hpp"
+#include "io/model_precheck.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -31,76 +32,10 @@ std::string lower_extension(const std::string& path) {
 
 [[noreturn]] void fail(const std::string& path, int line, const std::string& what) { throw InputError(path, line, what); }
 
-// Counts in a header are checked against the file size before assimp sees
-// them: every element needs at least one byte, so a larger count is a lie
-// (assimp would try to allocate for it).
-void check_claimed_count(const std::string& path, int line, uint64_t claimed, uint64_t file_size, const char* what) {
-  if (claimed > file_size)
-    fail(path, line,
-         std::string("header claims ") + std::to_string(claimed) + " " + what + ", more than the file's " +
-             std::to_string(file_size) + " bytes could hold");
-}
-
-void precheck_off(const std::string& path, uint64_t size) {
-  std::ifstream in(path);
-  std::string line;
-  int line_no = 0;
-  std::vector<std::string> tokens;
-  int counts_line = 0;
-  while (tokens.size() < 4 && std::getline(in, line)) {
-    ++line_no;
-    line = line.substr(0, line.find('#'));
-    std::istringstream s(line);
-    for (std::string t; s >> t;) {
-      if (tokens.empty() && t.size() >= 3 && t.compare(t.size() - 3, 3, "OFF") == 0) {
-        tokens.push_back(t);
-        continue;
-      }
-      if (tokens.empty()) tokens.push_back("");  // headerless OFF
-      if (tokens.size() == 1) counts_line = line_no;
-      tokens.push_back(t);
-    }
-  }
-  if (tokens.size() < 3) fail(path, line_no, "OFF file without vertex and face counts");
-  for (size_t i = 1; i < 3; ++i) {
-    const std::string& t = tokens[i];
-    if (t.empty() || !std::all_of(t.begin(), t.end(), [](unsigned char c) { return std::isdigit(c); }) || t.size() > 18)
-      fail(path, counts_line, "OFF count '" + t + "' is not a non-negative integer");
-    check_claimed_count(path, counts_line, std::stoull(t), size, i == 1 ? "vertices" : "faces");
-  }
-}
-
-void precheck_ply(const std::string& path, uint64_t size) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  int line_no = 0;
-  while (std::getline(in, line) && line_no < 1000) {
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line == "end_header") return;
-    std::istringstream s(line);
-    std::string kw, name, count;
-    s >> kw >> name >> count;
-    if (kw != "element") continue;
-    if (count.empty() || count.size() > 18 ||
-        !std::all_of(count.begin(), count.end(), [](unsigned char c) { return std::isdigit(c); }))
-      fail(path, line_no, "PLY element '" + name + "' count '" + count + "' is not a non-negative integer");
-    check_claimed_count(path, line_no, std::stoull(count), size, (name + " elements").c_str());
-  }
-}
-
-void precheck_stl(const std::string& path, uint64_t size) {
-  std::ifstream in(path, std::ios::binary);
-  char head[84] = {};
-  in.read(head, sizeof head);
-  if (std::string(head, 5) == "solid") return;  // ASCII STL: no counts
-  if (in.gcount() < 84) fail(path, 0, "binary STL shorter than its 84-byte header");
-  uint32_t n = 0;
-  for (int i = 3; i >= 0; --i) n = (n << 8) | static_cast<unsigned char>(head[80 + i]);
-  if (84 + 50 * uint64_t{n} != size)
-    fail(path, 0,
-         "binary STL claims " + std::to_string(n) + " triangles (" + std::to_string(84 + 50 * uint64_t{n}) +
-             " bytes) but the file has " + std::to_string(size) + " bytes");
+[[noreturn]] void fail_format(const std::string& path, const std::string& ext) {
+  fail(path, 0,
+       "model format '" + (ext.empty() ? std::string("(no extension)") : ext) +
+           "' is not read: OBJ, OFF, PLY and STL are (their counts are checked before import)");
 }
 
 // assimp's message, with "line N" turned into the error's line when present.
@@ -176,10 +111,9 @@ class MeshBuilder {
         if (face.mIndices[k] >= am.mNumVertices)
           fail(path_, 0, "face " + std::to_string(f) + " refers to vertex " + std::to_string(face.mIndices[k]) +
                              " of " + std::to_string(am.mNumVertices));
-        const int idx = index_of[face.mIndices[k]];
-        if (poly.empty() || poly.back() != idx) poly.push_back(idx);  // repeated corner: drop
+        poly.push_back(index_of[face.mIndices[k]]);
       }
-      if (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+      drop_repeated_corners(poly, [](int a, int b) { return a == b; });
       if (poly.size() >= 3) mesh_.polygons.push_back(std::move(poly));
     }
   }
@@ -191,10 +125,11 @@ class MeshBuilder {
 
 }  // namespace
 
-bool is_model_file(const std::string& path) {
+bool is_model_file(const std::string& path) { return is_checked_model_format(lower_extension(path)); }
+
+void reject_other_model_formats(const std::string& path) {
   const std::string e = lower_extension(path);
-  if (e.empty()) return false;
-  return aiIsExtensionSupported(e.c_str()) == AI_TRUE;
+  if (!e.empty() && !is_model_file(path) && aiIsExtensionSupported(e.c_str()) == AI_TRUE) fail_format(path, e);
 }
 
 Mesh import_model(const std::string& path) {
@@ -206,9 +141,8 @@ Mesh import_model(const std::string& path) {
   if (size == 0) fail(path, 0, "empty file");
   if (!std::ifstream(path)) fail(path, 0, "cannot open file");
   const std::string ext = lower_extension(path);
-  if (ext == ".off") precheck_off(path, size);
-  if (ext == ".ply") precheck_ply(path, size);
-  if (ext == ".stl") precheck_stl(path, size);
+  if (!is_checked_model_format(ext)) fail_format(path, ext);
+  precheck_model(path, ext, size);
 
   // No aiProcess_Triangulate: polygons must reach the GIRTD triangulator.
   const unsigned flags = aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;

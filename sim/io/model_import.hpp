@@ -1,7 +1,8 @@
-// Model files through assimp (OBJ, PLY, STL, OFF and the rest it reads),
-// polygons kept as polygons (no aiProcess_Triangulate: the GIRTD
-// triangulator does that). Every problem is an InputError naming the file
-// (and the line, when assimp's message gives one).
+// Model files through assimp: OBJ, OFF, PLY and STL, the formats whose
+// counts model_precheck checks before assimp reads them (other formats are
+// refused). Polygons are kept as polygons (no aiProcess_Triangulate: the
+// GIRTD triangulator does that). Every problem is an InputError naming the
+// file, and the line where the pre-check or assimp's message knows it.
 #pragma once
 
 #include <string>
@@ -19,6 +20,10 @@ inline constexpr size_t kMaxPolygonVertices = 65536;
 // share an index (STL repeats every corner). Points and lines are skipped.
 Mesh import_model(const std::string& path);
 
-bool is_model_file(const std::string& path);  // by extension, as assimp would pick its reader
+bool is_model_file(const std::string& path);  // by extension: .obj, .off, .ply, .stl (any case)
+
+// For a file that is not a model file: InputError "this format is not read"
+// when its extension names another format assimp knows (.3ds, .fbx, ...).
+void reject_other_model_formats(const std::string& path);
 
 }  // namespace girtd

@@ -12,14 +12,16 @@
 #include <nlohmann/json.hpp>
 
 #include "common/input_error.hpp"
-#include "frontend/json_lines.hpp"
+#include "frontend/rotation.hpp"
 #include "frontend/surface_groups.hpp"
 #include "frontend/view_transform.hpp"
+#include "io/json_lines.hpp"
 #include "io/model_import.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
 using nlohmann::json;
+using Ptr = json::json_pointer;  // built with operator/, which escapes ~ and / in names
 
 Surface SceneDefaults::material() {
   Surface s;
@@ -39,13 +41,7 @@ struct Transform {
   // p' = translate + Rz Ry Rx (scale p): scale, then rotate about X, Y, Z, then move.
   Vec3 apply(Vec3 p) const {
     p = {p.x * scale.x, p.y * scale.y, p.z * scale.z};
-    const double k = M_PI / 180.0;
-    double c = std::cos(rotate_deg.x * k), s = std::sin(rotate_deg.x * k);
-    p = {p.x, c * p.y - s * p.z, s * p.y + c * p.z};
-    c = std::cos(rotate_deg.y * k), s = std::sin(rotate_deg.y * k);
-    p = {c * p.x + s * p.z, p.y, -s * p.x + c * p.z};
-    c = std::cos(rotate_deg.z * k), s = std::sin(rotate_deg.z * k);
-    p = {c * p.x - s * p.y, s * p.x + c * p.y, p.z};
+    p = rotate_z(rotate_y(rotate_x(p, rotate_deg.x * kDegToRad), rotate_deg.y * kDegToRad), rotate_deg.z * kDegToRad);
     return p + translate;
   }
   bool mirrors() const { return scale.x * scale.y * scale.z < 0; }
@@ -118,6 +114,7 @@ class SceneReader {
     std::ostringstream ss;
     ss << in.rdbuf();
     text_ = ss.str();
+    check_json_nesting(text_, path);
     try {
       root_ = json::parse(text_);
     } catch (const json::parse_error& e) {
@@ -131,62 +128,69 @@ class SceneReader {
   }
 
   Trace read() {
-    keys(root_, "", {"girtd_scene", "comment", "window", "background", "q", "cull_back_faces", "focal_distance",
-                     "camera", "lights", "materials", "models", "frames"});
-    if (!root_.contains("girtd_scene")) fail("", "not a GIRTD scene: no \"girtd_scene\": 1");
-    if (integer("/girtd_scene", 1, 1000) != kSceneVersion)
-      fail("/girtd_scene", "scene version " + root_["girtd_scene"].dump() + " is not supported (this reader knows 1)");
+    const Ptr root;
+    keys(root_, root, {"girtd_scene", "comment", "window", "background", "q", "cull_back_faces", "focal_distance",
+                       "camera", "lights", "materials", "models", "frames"});
+    if (!root_.contains("girtd_scene")) fail(root, "not a GIRTD scene: no \"girtd_scene\": 1");
+    if (integer(root / "girtd_scene", 1, 1000) != kSceneVersion)
+      fail(root / "girtd_scene",
+           "scene version " + root_["girtd_scene"].dump() + " is not supported (this reader knows 1)");
     FrameSettings settings;
     if (root_.contains("window")) {
-      const json& w = at("/window");
-      if (!w.is_array() || w.size() != 4) fail("/window", "window is [X0, Y0, X1, Y1]");
-      settings.window.x0 = static_cast<int>(integer("/window/0", 0, params_.screen_width - 1));
-      settings.window.y0 = static_cast<int>(integer("/window/1", 0, params_.screen_height - 1));
-      settings.window.x1 = static_cast<int>(integer("/window/2", 0, params_.screen_width - 1));
-      settings.window.y1 = static_cast<int>(integer("/window/3", 0, params_.screen_height - 1));
+      const Ptr wp = root / "window";
+      const json& w = at(wp);
+      if (!w.is_array() || w.size() != 4) fail(wp, "window is [X0, Y0, X1, Y1]");
+      settings.window.x0 = static_cast<int>(integer(wp / size_t{0}, 0, params_.screen_width - 1));
+      settings.window.y0 = static_cast<int>(integer(wp / size_t{1}, 0, params_.screen_height - 1));
+      settings.window.x1 = static_cast<int>(integer(wp / size_t{2}, 0, params_.screen_width - 1));
+      settings.window.y1 = static_cast<int>(integer(wp / size_t{3}, 0, params_.screen_height - 1));
       if (settings.window.x0 > settings.window.x1 || settings.window.y0 > settings.window.y1)
-        fail("/window", "window is empty (X0 > X1 or Y0 > Y1)");
+        fail(wp, "window is empty (X0 > X1 or Y0 > Y1)");
     }
     if (root_.contains("background")) {
-      const json& b = at("/background");
-      if (!b.is_array() || b.size() != 3) fail("/background", "background is [R, G, B]");
-      settings.background = {static_cast<uint8_t>(integer("/background/0", 0, 255)),
-                             static_cast<uint8_t>(integer("/background/1", 0, 255)),
-                             static_cast<uint8_t>(integer("/background/2", 0, 255))};
+      const Ptr bp = root / "background";
+      const json& b = at(bp);
+      if (!b.is_array() || b.size() != 3) fail(bp, "background is [R, G, B]");
+      settings.background = {static_cast<uint8_t>(integer(bp / size_t{0}, 0, 255)),
+                             static_cast<uint8_t>(integer(bp / size_t{1}, 0, 255)),
+                             static_cast<uint8_t>(integer(bp / size_t{2}, 0, 255))};
     }
     if (root_.contains("q")) {
-      settings.q = number("/q", 0, 64);
-      settings.q_line = lines_->line("/q");
+      settings.q = number(root / "q", 0, 64);
+      settings.q_line = line(root / "q");
     }
     WorldFrame base;
-    base.cull_back_faces = root_.contains("cull_back_faces") ? boolean("/cull_back_faces") : false;
+    base.cull_back_faces = root_.contains("cull_back_faces") ? boolean(root / "cull_back_faces") : false;
     std::optional<double> focal;
-    if (root_.contains("focal_distance")) focal = number("/focal_distance", 1e-9, 1e12);
-    base.lights = root_.contains("lights") ? lights("/lights") : default_lights();
+    if (root_.contains("focal_distance")) focal = number(root / "focal_distance", 1e-9, 1e12);
+    base.lights = root_.contains("lights") ? lights(root / "lights") : default_lights();
     const std::map<std::string, Surface> materials = read_materials();
     std::vector<Instance> instances = read_models(materials);
-    const CameraSpec base_camera = root_.contains("camera") ? camera("/camera") : CameraSpec{};
+    const CameraSpec base_camera = root_.contains("camera") ? camera(root / "camera") : CameraSpec{};
 
     Trace trace;
     trace.path = path_;
     trace.level = TraceLevel::kPolygon;
-    const size_t n_frames = root_.contains("frames") ? frames_count() : 1;
+    const bool has_frames = root_.contains("frames");
+    const size_t n_frames = has_frames ? frames_count() : 1;
+    check_corners(instances, n_frames, has_frames ? root / "frames" : root / "models");
     std::optional<Camera> auto_camera;
     for (size_t f = 0; f < n_frames; ++f) {
-      const std::string fp = "/frames/" + std::to_string(f);
+      const Ptr fp = root / "frames" / f;
       CameraSpec cam = base_camera;
       std::vector<Instance> moved = instances;
-      if (root_.contains("frames")) {
+      if (has_frames) {
         keys(at(fp), fp, {"camera", "models", "comment"});
-        if (at(fp).contains("camera")) cam = camera(fp + "/camera");
-        if (at(fp).contains("models")) frame_models(fp + "/models", moved);
+        if (at(fp).contains("camera")) cam = camera(fp / "camera");
+        if (at(fp).contains("models")) frame_models(fp / "models", moved);
       }
       TraceFrame tf;
       tf.settings = settings;
       tf.world.cull_back_faces = base.cull_back_faces;
       tf.world.lights = base.lights;
       place(moved, tf.world);
-      for (WorldPolygon& p : tf.world.polygons) p.source_line = lines_->line(root_.contains("frames") ? fp : "/models");
+      const int source = line(has_frames ? fp : root / "models");
+      for (WorldPolygon& p : tf.world.polygons) p.source_line = source;
       if (cam.automatic) {
         // Framed once, on the first frame that needs it, so an animation does not zoom.
         if (!auto_camera) {
@@ -206,25 +210,31 @@ class SceneReader {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& ptr, const std::string& what) const {
-    throw InputError(path_, lines_ ? lines_->line(ptr) : 0, what);
+  int line(const Ptr& ptr) const { return lines_ ? lines_->line(ptr.to_string()) : 0; }
+  [[noreturn]] void fail(const Ptr& ptr, const std::string& what) const { throw InputError(path_, line(ptr), what); }
+
+  // "scene", or the key's path in quotes ("materials/glass/n"), names unescaped.
+  static std::string key_name(Ptr ptr) {
+    if (ptr.empty()) return "scene";
+    std::string s;
+    for (; !ptr.empty(); ptr.pop_back()) s = ptr.back() + (s.empty() ? "" : "/") + s;
+    return "\"" + s + "\"";
   }
-  static std::string key_name(const std::string& ptr) { return ptr.empty() ? "scene" : "\"" + ptr.substr(1) + "\""; }
 
-  const json& at(const std::string& ptr) const { return root_.at(json::json_pointer(ptr)); }
+  const json& at(const Ptr& ptr) const { return root_.at(ptr); }
 
-  void keys(const json& obj, const std::string& ptr, std::initializer_list<const char*> allowed) const {
+  void keys(const json& obj, const Ptr& ptr, std::initializer_list<const char*> allowed) const {
     if (!obj.is_object()) fail(ptr, key_name(ptr) + " must be an object");
     const std::set<std::string> ok(allowed.begin(), allowed.end());
     for (auto it = obj.begin(); it != obj.end(); ++it)
       if (!ok.count(it.key())) {
         std::string list;
         for (const std::string& k : ok) list += (list.empty() ? "" : ", ") + k;
-        fail(ptr + "/" + it.key(), "unknown key \"" + it.key() + "\" in " + key_name(ptr) + " (known: " + list + ")");
+        fail(ptr / it.key(), "unknown key \"" + it.key() + "\" in " + key_name(ptr) + " (known: " + list + ")");
       }
   }
 
-  double number(const std::string& ptr, double lo, double hi) const {
+  double number(const Ptr& ptr, double lo, double hi) const {
     const json& v = at(ptr);
     if (!v.is_number()) fail(ptr, key_name(ptr) + " must be a number");
     const double d = v.get<double>();
@@ -236,7 +246,7 @@ class SceneReader {
     return d;
   }
 
-  int64_t integer(const std::string& ptr, int64_t lo, int64_t hi) const {
+  int64_t integer(const Ptr& ptr, int64_t lo, int64_t hi) const {
     const json& v = at(ptr);
     if (!v.is_number_integer()) fail(ptr, key_name(ptr) + " must be an integer");
     const int64_t i = v.get<int64_t>();
@@ -245,38 +255,39 @@ class SceneReader {
     return i;
   }
 
-  bool boolean(const std::string& ptr) const {
+  bool boolean(const Ptr& ptr) const {
     const json& v = at(ptr);
     if (!v.is_boolean()) fail(ptr, key_name(ptr) + " must be true or false");
     return v.get<bool>();
   }
 
-  std::string string(const std::string& ptr) const {
+  std::string string(const Ptr& ptr) const {
     const json& v = at(ptr);
     if (!v.is_string()) fail(ptr, key_name(ptr) + " must be a string");
     return v.get<std::string>();
   }
 
-  Vec3 vec3(const std::string& ptr, double limit = 1e12) const {
+  Vec3 vec3(const Ptr& ptr, double limit = 1e12) const {
     const json& v = at(ptr);
     if (!v.is_array() || v.size() != 3) fail(ptr, key_name(ptr) + " must be [x, y, z]");
-    return {number(ptr + "/0", -limit, limit), number(ptr + "/1", -limit, limit), number(ptr + "/2", -limit, limit)};
+    return {number(ptr / size_t{0}, -limit, limit), number(ptr / size_t{1}, -limit, limit),
+            number(ptr / size_t{2}, -limit, limit)};
   }
 
-  LightSet lights(const std::string& ptr) const {
+  LightSet lights(const Ptr& ptr) const {
     keys(at(ptr), ptr, {"ambient", "directional"});
     LightSet l;
-    l.ambient = at(ptr).contains("ambient") ? number(ptr + "/ambient", 0, 16) : 0.0;
+    l.ambient = at(ptr).contains("ambient") ? number(ptr / "ambient", 0, 16) : 0.0;
     if (!at(ptr).contains("directional")) return l;
-    const json& d = at(ptr + "/directional");
-    if (!d.is_array()) fail(ptr + "/directional", "\"directional\" must be a list of lights");
+    const json& d = at(ptr / "directional");
+    if (!d.is_array()) fail(ptr / "directional", "\"directional\" must be a list of lights");
     for (size_t i = 0; i < d.size(); ++i) {
-      const std::string lp = ptr + "/directional/" + std::to_string(i);
+      const Ptr lp = ptr / "directional" / i;
       keys(at(lp), lp, {"toward", "intensity"});
       if (!at(lp).contains("toward")) fail(lp, "a directional light needs \"toward\" (the direction toward the light)");
-      const Vec3 t = vec3(lp + "/toward");
-      if (length(t) == 0) fail(lp + "/toward", "\"toward\" is the zero vector");
-      l.directional.push_back({normalized(t), at(lp).contains("intensity") ? number(lp + "/intensity", 0, 16) : 1.0});
+      const Vec3 t = vec3(lp / "toward");
+      if (length(t) == 0) fail(lp / "toward", "\"toward\" is the zero vector");
+      l.directional.push_back({normalized(t), at(lp).contains("intensity") ? number(lp / "intensity", 0, 16) : 1.0});
     }
     return l;
   }
@@ -284,74 +295,88 @@ class SceneReader {
   std::map<std::string, Surface> read_materials() const {
     std::map<std::string, Surface> out;
     if (!root_.contains("materials")) return out;
-    const json& m = at("/materials");
-    if (!m.is_object()) fail("/materials", "\"materials\" must be an object of named materials");
+    const Ptr ms = Ptr() / "materials";
+    const json& m = at(ms);
+    if (!m.is_object()) fail(ms, "\"materials\" must be an object of named materials");
     for (auto it = m.begin(); it != m.end(); ++it) {
-      const std::string mp = "/materials/" + it.key();
+      const Ptr mp = ms / it.key();
       keys(it.value(), mp, {"colour", "cre", "n", "t_min", "t_max"});
       Surface s = SceneDefaults::material();
       if (it->contains("colour")) {
-        const Vec3 c = vec3(mp + "/colour", 1e12);
-        for (int k = 0; k < 3; ++k) number(mp + "/colour/" + std::to_string(k), 0, 255);
+        const Vec3 c = vec3(mp / "colour", 1e12);
+        for (size_t k = 0; k < 3; ++k) number(mp / "colour" / k, 0, 255);
         s.r = c.x, s.g = c.y, s.b = c.z;
       }
       if (it->contains("cre")) {
-        const json& c = at(mp + "/cre");
+        const json& c = at(mp / "cre");
         if (!c.is_array() || c.size() != static_cast<size_t>(kCreSteps))
-          fail(mp + "/cre", "\"cre\" must list CRE at 0, 15, 30, 45, 60, 75 and 90 degrees (7 numbers)");
-        for (int k = 0; k < kCreSteps; ++k) s.cre[static_cast<size_t>(k)] = number(mp + "/cre/" + std::to_string(k), 0, 1);
+          fail(mp / "cre", "\"cre\" must list CRE at 0, 15, 30, 45, 60, 75 and 90 degrees (7 numbers)");
+        for (size_t k = 0; k < static_cast<size_t>(kCreSteps); ++k) s.cre[k] = number(mp / "cre" / k, 0, 1);
       }
-      if (it->contains("n")) s.n = number(mp + "/n", 1, 1000);
-      if (it->contains("t_min")) s.t_min = number(mp + "/t_min", 0, 1);
-      if (it->contains("t_max")) s.t_max = number(mp + "/t_max", 0, 1);
+      if (it->contains("n")) s.n = number(mp / "n", kMinSpecularExponent, kMaxSpecularExponent);
+      if (it->contains("t_min")) s.t_min = number(mp / "t_min", 0, 1);
+      if (it->contains("t_max")) s.t_max = number(mp / "t_max", 0, 1);
       out[it.key()] = s;
     }
     return out;
   }
 
-  void transform_keys(const std::string& ptr, Transform& t) const {
+  void transform_keys(const Ptr& ptr, Transform& t) const {
     const json& j = at(ptr);
     if (j.contains("scale")) {
-      if (at(ptr + "/scale").is_number()) {
-        const double s = number(ptr + "/scale", -1e9, 1e9);
+      if (at(ptr / "scale").is_number()) {
+        const double s = number(ptr / "scale", -1e9, 1e9);
         t.scale = {s, s, s};
       } else {
-        t.scale = vec3(ptr + "/scale", 1e9);
+        t.scale = vec3(ptr / "scale", 1e9);
       }
-      if (t.scale.x == 0 || t.scale.y == 0 || t.scale.z == 0) fail(ptr + "/scale", "a scale of 0 flattens the model");
+      if (t.scale.x == 0 || t.scale.y == 0 || t.scale.z == 0) fail(ptr / "scale", "a scale of 0 flattens the model");
     }
-    if (j.contains("rotate_deg")) t.rotate_deg = vec3(ptr + "/rotate_deg", 1e6);
-    if (j.contains("translate")) t.translate = vec3(ptr + "/translate");
+    if (j.contains("rotate_deg")) t.rotate_deg = vec3(ptr / "rotate_deg", 1e6);
+    if (j.contains("translate")) t.translate = vec3(ptr / "translate");
+  }
+
+  // A model file, imported once per scene; its errors are the scene's, at
+  // the "file" key's line, with the model's own FILE:LINE after "model".
+  std::shared_ptr<const Mesh> mesh(const Ptr& file_ptr, std::map<std::string, std::shared_ptr<const Mesh>>& cache) const {
+    fs::path file = string(file_ptr);
+    if (file.is_relative()) file = fs::path(path_).parent_path() / file;
+    const std::string key = file.lexically_normal().string();
+    if (!fs::exists(key)) fail(file_ptr, "model file " + key + " does not exist");
+    if (!cache.count(key)) {
+      try {
+        cache[key] = std::make_shared<const Mesh>(import_model(key));
+      } catch (const InputError& e) {
+        fail(file_ptr, "model " + e.formatted());
+      }
+    }
+    return cache[key];
   }
 
   std::vector<Instance> read_models(const std::map<std::string, Surface>& materials) {
-    if (!root_.contains("models")) fail("", "the scene has no \"models\"");
-    const json& ms = at("/models");
-    if (!ms.is_array() || ms.empty()) fail("/models", "\"models\" must be a non-empty list");
+    const Ptr ms = Ptr() / "models";
+    if (!root_.contains("models")) fail(Ptr(), "the scene has no \"models\"");
+    const json& m = at(ms);
+    if (!m.is_array() || m.empty()) fail(ms, "\"models\" must be a non-empty list");
     std::vector<Instance> out;
     std::map<std::string, std::shared_ptr<const Mesh>> cache;
-    for (size_t i = 0; i < ms.size(); ++i) {
-      const std::string mp = "/models/" + std::to_string(i);
+    for (size_t i = 0; i < m.size(); ++i) {
+      const Ptr mp = ms / i;
       keys(at(mp), mp, {"name", "file", "material", "crease_deg", "scale", "rotate_deg", "translate"});
       Instance in;
-      in.name = at(mp).contains("name") ? string(mp + "/name") : "model" + std::to_string(i);
+      in.name = at(mp).contains("name") ? string(mp / "name") : "model" + std::to_string(i);
       for (const Instance& o : out)
-        if (o.name == in.name) fail(mp + "/name", "two models are named \"" + in.name + "\"");
+        if (o.name == in.name) fail(mp / "name", "two models are named \"" + in.name + "\"");
       if (!at(mp).contains("file")) fail(mp, "a model needs \"file\"");
-      fs::path file = string(mp + "/file");
-      if (file.is_relative()) file = fs::path(path_).parent_path() / file;
-      const std::string key = file.lexically_normal().string();
-      if (!fs::exists(key)) fail(mp + "/file", "model file " + key + " does not exist");
-      if (!cache.count(key)) cache[key] = std::make_shared<const Mesh>(import_model(key));
-      in.mesh = cache[key];
+      in.mesh = mesh(mp / "file", cache);
       in.material = SceneDefaults::material();
       if (at(mp).contains("material")) {
-        const std::string name = string(mp + "/material");
+        const std::string name = string(mp / "material");
         auto it = materials.find(name);
-        if (it == materials.end()) fail(mp + "/material", "no material named \"" + name + "\" in \"materials\"");
+        if (it == materials.end()) fail(mp / "material", "no material named \"" + name + "\" in \"materials\"");
         in.material = it->second;
       }
-      const double crease = at(mp).contains("crease_deg") ? number(mp + "/crease_deg", 0, 180) : kDefaultCreaseDeg;
+      const double crease = at(mp).contains("crease_deg") ? number(mp / "crease_deg", 0, 180) : kDefaultCreaseDeg;
       in.groups = surface_groups(*in.mesh, crease);
       transform_keys(mp, in.transform);
       out.push_back(std::move(in));
@@ -359,11 +384,11 @@ class SceneReader {
     return out;
   }
 
-  CameraSpec camera(const std::string& ptr) const {
+  CameraSpec camera(const Ptr& ptr) const {
     const json& c = at(ptr);
     if (c.is_string() && c.get<std::string>() == "auto") return CameraSpec{};
     keys(c, ptr, {"eye", "target", "up", "centre", "angles_deg", "fov_deg"});
-    const double fov = c.contains("fov_deg") ? number(ptr + "/fov_deg", 1, 170) : SceneDefaults::kFovDeg;
+    const double fov = c.contains("fov_deg") ? number(ptr / "fov_deg", 1, 170) : SceneDefaults::kFovDeg;
     CameraSpec s;
     s.automatic = false;
     const bool look_at = c.contains("eye") || c.contains("target") || c.contains("up");
@@ -372,31 +397,44 @@ class SceneReader {
       fail(ptr, "camera is either {\"eye\", \"target\", \"up\"} or {\"centre\", \"angles_deg\"} (or \"auto\")");
     if (look_at) {
       if (!c.contains("eye") || !c.contains("target")) fail(ptr, "a look-at camera needs \"eye\" and \"target\"");
-      const Vec3 up = c.contains("up") ? vec3(ptr + "/up") : Vec3{0, 1, 0};
-      const std::optional<Camera> cam = camera_look_at(vec3(ptr + "/eye"), vec3(ptr + "/target"), up, fov);
+      const Vec3 up = c.contains("up") ? vec3(ptr / "up") : Vec3{0, 1, 0};
+      const std::optional<Camera> cam = camera_look_at(vec3(ptr / "eye"), vec3(ptr / "target"), up, fov);
       if (!cam) fail(ptr, "eye equals target, or up is parallel to the view direction");
       s.camera = *cam;
     } else {
       if (!c.contains("centre") || !c.contains("angles_deg"))
         fail(ptr, "an angle camera needs \"centre\" and \"angles_deg\" [yaw, pitch, roll]");
-      const Vec3 a = vec3(ptr + "/angles_deg", 1e6);
-      s.camera = camera_from_angles(vec3(ptr + "/centre"), a.x, a.y, a.z, fov);
+      const Vec3 a = vec3(ptr / "angles_deg", 1e6);
+      s.camera = camera_from_angles(vec3(ptr / "centre"), a.x, a.y, a.z, fov);
     }
     return s;
   }
 
   size_t frames_count() const {
-    const json& f = at("/frames");
-    if (!f.is_array() || f.empty()) fail("/frames", "\"frames\" must be a non-empty list");
-    if (f.size() > kMaxFrames) fail("/frames", "more than " + std::to_string(kMaxFrames) + " frames");
+    const Ptr fp = Ptr() / "frames";
+    const json& f = at(fp);
+    if (!f.is_array() || f.empty()) fail(fp, "\"frames\" must be a non-empty list");
+    if (f.size() > kMaxFrames) fail(fp, "more than " + std::to_string(kMaxFrames) + " frames");
     return f.size();
   }
 
-  void frame_models(const std::string& ptr, std::vector<Instance>& moved) const {
+  // Every frame's polygons are placed before the front end runs: their
+  // corners, over all frames, are capped (kMaxSceneCorners).
+  void check_corners(const std::vector<Instance>& instances, size_t frames, const Ptr& where) const {
+    uint64_t per_frame = 0;
+    for (const Instance& in : instances)
+      for (const std::vector<int>& p : in.mesh->polygons) per_frame += p.size();
+    if (per_frame > kMaxSceneCorners / frames)
+      fail(where, std::to_string(frames) + (frames == 1 ? " frame" : " frames") + " x " + std::to_string(per_frame) +
+                      " polygon corners is more than the " + std::to_string(kMaxSceneCorners) +
+                      " corners a scene may place: use fewer frames or smaller models");
+  }
+
+  void frame_models(const Ptr& ptr, std::vector<Instance>& moved) const {
     const json& m = at(ptr);
     if (!m.is_object()) fail(ptr, "a frame's \"models\" is an object: model name -> transform");
     for (auto it = m.begin(); it != m.end(); ++it) {
-      const std::string mp = ptr + "/" + it.key();
+      const Ptr mp = ptr / it.key();
       auto in = std::find_if(moved.begin(), moved.end(), [&](const Instance& x) { return x.name == it.key(); });
       if (in == moved.end()) fail(mp, "no model named \"" + it.key() + "\"");
       keys(it.value(), mp, {"scale", "rotate_deg", "translate"});

@@ -4,6 +4,7 @@
 // problem is an InputError "FILE:LINE: what".
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "config/params.hpp"
@@ -26,6 +27,10 @@ struct SceneDefaults {
   static constexpr double kLightIntensity = 0.75;
   static Surface material();  // light grey, CRE 0.30 .. 0.80, n = 20, opaque
 };
+
+// A scene places every frame's polygons before the front end runs, so frames
+// x polygon corners is capped: 30 M corners hold about 1.2 GB.
+inline constexpr uint64_t kMaxSceneCorners = 30000000;
 
 Trace read_scene(const std::string& path, const Params& params);
 

@@ -261,7 +261,7 @@ class TraceBuilder {
       s.r = p.real_in(2, "R", 0, 255);
       s.g = p.real_in(3, "G", 0, 255);
       s.b = p.real_in(4, "B", 0, 255);
-      s.n = p.real_in(5, "N", 1, 1000);
+      s.n = p.real_in(5, "N", kMinSpecularExponent, kMaxSpecularExponent);
       s.t_min = p.real_in(6, "TMIN", 0, 1);
       s.t_max = p.real_in(7, "TMAX", 0, 1);
       for (int i = 0; i < kCreSteps; ++i) s.cre[static_cast<size_t>(i)] = p.real_in(8 + static_cast<size_t>(i), "CRE", 0, 1);

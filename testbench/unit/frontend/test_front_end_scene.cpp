@@ -8,6 +8,7 @@
 #include "backends/backend.hpp"
 #include "backends/render_session.hpp"
 #include "frontend/front_end.hpp"
+#include "frontend/vertex_normals.hpp"
 #include "frontend/view_transform.hpp"
 
 using namespace girtd;
@@ -201,4 +202,47 @@ TEST_CASE("front end: depth clip through the near plane, non-planar polygon", "[
     for (const Vertex& v : t.tri.v) zmin = std::min(zmin, v.z), zmax = std::max(zmax, v.z);
   CHECK(zmin == 0);
   CHECK(zmax == Approx(65534));
+  // made_edge: each quad's one diagonal, seen from both its triangles: 2 + 2.
+  // The edge the clip made along Zs = C (both ends at Zp = 0) is a polygon
+  // edge of the clipped floor: drawn in wire-frame, not made.
+  CHECK(c.made_edges == 4);
+  int cut_edges = 0;
+  for (const FrontTriangle& t : tris)
+    for (int e = 0; e < 3; ++e)
+      if (t.tri.v[e].z == 0 && t.tri.v[(e + 1) % 3].z == 0) {
+        ++cut_edges;
+        CHECK_FALSE(t.made_edge[e]);
+      }
+  CHECK(cut_edges == 1);
+}
+
+TEST_CASE("front end: a polygon without area is degenerate in world space, before culling", "[frontend]") {
+  // Three points on one 3D line, seen by a turned camera: in camera space
+  // rounding leaves the Newell normal non-zero, which the old exact test
+  // let through (it drew a long line).
+  const Vec3 p0{0.1, 0.2, -5}, d{0.37, 0.11, -0.53};
+  const std::vector<Vec3> line = {p0, p0 + 0.3 * d, p0 + 0.7 * d};
+  WorldFrame f;
+  f.camera = camera_from_angles({0.3, -0.2, 1}, 17, 5, 3, 60);
+  f.focal_distance = 0.1;
+  f.surfaces.resize(1);
+  std::vector<Vec3> seen;
+  for (const Vec3& p : line) seen.push_back(to_camera_space(f.camera, p));
+  REQUIRE(length(newell_normal(seen)) > 0);
+  f.polygons.push_back({0, line, 1});
+  for (bool cull : {false, true}) {
+    f.cull_back_faces = cull;
+    FrontEnd fe(ScreenMap{1024, 1024}, 65534);
+    CHECK(fe.run_frame(f, Window{}).empty());
+    CHECK(fe.counts().degenerate_polygons == 1);
+    CHECK(fe.counts().culled == 0);  // no area, no facing: not a back face
+    CHECK(fe.counts().triangles_made == 0);
+  }
+  // A thin but real sliver (area / perimeter^2 = 1.25e-6) stays a polygon.
+  f.cull_back_faces = false;
+  f.polygons = {{0, {{0, 0, -5}, {1, 0, -5}, {0.5, 1e-5, -5}}, 2}};
+  FrontEnd fe(ScreenMap{1024, 1024}, 65534);
+  fe.run_frame(f, Window{});
+  CHECK(fe.counts().degenerate_polygons == 0);
+  CHECK(fe.counts().triangles_made == 1);
 }

@@ -54,7 +54,7 @@ TEST_CASE("cube vertex normals: one surface averages, six surfaces keep face nor
 TEST_CASE("lighting: light straight on and at 60 degrees, CRE interpolation", "[frontend]") {
   Surface s;
   s.r = 200, s.g = 100, s.b = 0;
-  s.cre = {0.5, 0.4, 0.3, 0.2, 0.1, 0.0, 0.0};
+  s.cre = {0.5, 0.4, 0.3, 0.2, 0.1, 0.07, 0.01};  // 75 and 90 deg distinct, not in line with 60: the last interval is checked too
   s.n = 10;
   LightSet l;
   l.ambient = 0.2;
@@ -83,7 +83,10 @@ TEST_CASE("lighting: light straight on and at 60 degrees, CRE interpolation", "[
 
   // CRE halfway between samples: 37.5 deg -> (0.3 + 0.2) / 2 = 0.25; beyond 90 clamps.
   CHECK(cre_at(s, 37.5) == Approx(0.25));
-  CHECK(cre_at(s, 90) == Approx(0.0).margin(1e-9));
+  CHECK(cre_at(s, 90) == Approx(0.01));
+  CHECK(cre_at(s, 75) == Approx(0.07));
+  CHECK(cre_at(s, 82.5) == Approx(0.04));
+  CHECK(cre_at(s, 120) == Approx(0.01));
   CHECK(cre_at(s, 7.5) == Approx(0.45));
 
   // Light behind the surface: N.I < 0 clamps to 0, only ambient remains: 200 x 0.2 = 40.

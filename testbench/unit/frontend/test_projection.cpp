@@ -18,6 +18,15 @@ TEST_CASE("Zp: Zmin -> 0, Zmax -> 65534, affine in 1/Zs", "[frontend]") {
   CHECK(DepthMap(3, 3, 65534).zp(3) == 0);
 }
 
+TEST_CASE("projection: Xp = Xs/Zs D/S, Yp = Ys/Zs D/S", "[frontend]") {
+  // (2, -1, 4) with D/S = 2: Xp = 2/4 x 2 = 1, Yp = -1/4 x 2 = -0.5.
+  const PlanePoint p = project({2, -1, 4}, 2);
+  CHECK(p.xp == 1);
+  CHECK(p.yp == -0.5);
+  // 90 deg field of view (D/S = 1): the 45 deg ray lands on the plane's edge.
+  CHECK(project({-3, 3, 3}, d_over_s_for_fov(90)).xp == Approx(-1));
+}
+
 TEST_CASE("screen map: -1 and +1 on the first and last pixel centres, y down", "[frontend]") {
   const ScreenMap m{1024, 1024};
   CHECK(m.x(-1) == 0);

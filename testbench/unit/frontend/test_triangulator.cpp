@@ -126,3 +126,23 @@ TEST_CASE("triangulator: a collinear vertex and a self-intersecting bow-tie", "[
   const Triangulation b = triangulate({{0, 0}, {2, 2}, {2, 0}, {0, 2}});
   CHECK(b.triangles.size() == 2);
 }
+
+TEST_CASE("triangulator: a corner straight but for rounding is not concave", "[frontend]") {
+  // b = a + 0.1 (c - a), on the line a-c, but in doubles cross(a, b, c) = -5.6e-17:
+  // the exact test called b concave and fanned from it.
+  const Point2 a{0.1, 0.3}, b{0.25, 0.41000000000000003}, c{1.6, 1.4};
+  REQUIRE((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) < 0);
+  const std::vector<Point2> p = {a, b, c, {0.8, 2.4}, {-0.4, 1.2}};
+  const Triangulation t = triangulate(p);
+  CHECK(t.concave_vertices == 0);
+  CHECK(t.method == TriangulationMethod::kConvexFan);
+  REQUIRE(t.triangles.size() == 3);
+  double sum = 0;
+  for (const TriangleIndices& tri : t.triangles) sum += tri_area(p, tri);
+  CHECK(sum == Approx(signed_area(p)));
+  // Bent in by 1e-6 of its edges (far above kStraightTolerance): concave after all.
+  const Point2 bent{0.25 - 1e-6 * 1.1, 0.41 + 1e-6 * 1.5};
+  const Triangulation u = triangulate({a, bent, c, {0.8, 2.4}, {-0.4, 1.2}});
+  CHECK(u.concave_vertices == 1);
+  CHECK(u.method == TriangulationMethod::kConcaveFan);
+}

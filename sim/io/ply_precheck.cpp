@@ -1,0 +1,294 @@
+// PLY before assimp: the header's element counts against the file size, then
+// every element instance walked as assimp will read it (ASCII: one instance
+// per line; binary: packed values), so that each list length is checked
+// (at most kMaxPolygonVertices, and no more values than the line or the
+// bytes left hold) before assimp allocates for it. Face indices are checked
+// against the vertex count; ASCII errors carry their line.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string_view>
+#include <vector>
+
+#include "common/input_error.hpp"
+#include "io/model_import.hpp"
+#include "io/model_precheck.hpp"
+#include "io/model_tokens.hpp"
+
+namespace girtd {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, int line, const std::string& what) { throw InputError(path, line, what); }
+
+struct PlyType {
+  int size = 0;  // bytes in a binary file
+  bool integer = false, is_signed = false;
+};
+
+bool ply_type(std::string_view name, PlyType& out) {
+  struct Named {
+    const char* name;
+    PlyType type;
+  };
+  constexpr Named kTypes[] = {
+      {"char", {1, true, true}},     {"int8", {1, true, true}},     {"uchar", {1, true, false}},
+      {"uint8", {1, true, false}},   {"short", {2, true, true}},    {"int16", {2, true, true}},
+      {"ushort", {2, true, false}},  {"uint16", {2, true, false}},  {"int", {4, true, true}},
+      {"int32", {4, true, true}},    {"uint", {4, true, false}},    {"uint32", {4, true, false}},
+      {"float", {4, false, true}},   {"float32", {4, false, true}}, {"double", {8, false, true}},
+      {"float64", {8, false, true}},
+  };
+  for (const Named& t : kTypes)
+    if (name == t.name) {
+      out = t.type;
+      return true;
+    }
+  return false;
+}
+
+struct PlyProperty {
+  std::string name;
+  PlyType type;           // the value's (a list's items')
+  bool is_list = false;
+  PlyType count_type;     // a list's length
+};
+
+struct PlyElement {
+  std::string name;
+  uint64_t count = 0;
+  std::vector<PlyProperty> properties;
+  bool face_indices(const PlyProperty& p) const {
+    return name == "face" && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index");
+  }
+};
+
+enum class PlyFormat { kAscii, kLittleEndian, kBigEndian };
+
+struct PlyHeader {
+  PlyFormat format = PlyFormat::kAscii;
+  std::vector<PlyElement> elements;
+  uint64_t vertices = 0;  // the count of element "vertex"
+  size_t body = 0;        // byte offset of the first byte after end_header's line
+  int body_line = 0;      // the line the body starts on
+};
+
+PlyHeader read_header(const std::string& path, const std::string& data) {
+  PlyHeader h;
+  bool have_format = false;
+  size_t at = 0;
+  std::vector<std::string_view> tok;
+  for (int no = 1;; ++no) {
+    if (at >= data.size()) fail(path, no, "PLY header without end_header");
+    size_t end = data.find('\n', at);
+    if (end == std::string::npos) end = data.size();
+    std::string_view line(data.data() + at, end - at);
+    at = end + 1;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (no == 1) {
+      if (line != "ply") fail(path, 1, "not a PLY file (the first line is not 'ply')");
+      continue;
+    }
+    split_tokens(line, tok);
+    if (tok.empty() || tok[0] == "comment" || tok[0] == "obj_info") continue;
+    if (tok[0] == "end_header") {
+      if (!have_format) fail(path, no, "PLY header without a 'format' line");
+      h.body = std::min(at, data.size());
+      h.body_line = no + 1;
+      return h;
+    }
+    if (tok[0] == "format") {
+      if (tok.size() < 2) fail(path, no, "'format' without a format");
+      if (tok[1] == "ascii") h.format = PlyFormat::kAscii;
+      else if (tok[1] == "binary_little_endian") h.format = PlyFormat::kLittleEndian;
+      else if (tok[1] == "binary_big_endian") h.format = PlyFormat::kBigEndian;
+      else fail(path, no, "unknown PLY format '" + std::string(tok[1]) + "'");
+      have_format = true;
+    } else if (tok[0] == "element") {
+      int64_t n = 0;
+      const std::string count = tok.size() > 2 ? std::string(tok[2]) : "";
+      const std::string name = tok.size() > 1 ? std::string(tok[1]) : "";
+      if (!parse_integer(count, n) || n < 0)
+        fail(path, no, "PLY element '" + name + "' count '" + count + "' is not a non-negative integer");
+      if (static_cast<uint64_t>(n) > data.size())
+        fail(path, no,
+             "header claims " + count + " " + name + " elements, more than the file's " + std::to_string(data.size()) +
+                 " bytes could hold");
+      if (name == "face" && static_cast<uint64_t>(n) > kMaxModelPolygons)
+        fail(path, no, "header claims " + count + " faces (limit " + std::to_string(kMaxModelPolygons) + ")");
+      if (name == "vertex") h.vertices = static_cast<uint64_t>(n);
+      h.elements.push_back({name, static_cast<uint64_t>(n), {}});
+    } else if (tok[0] == "property") {
+      if (h.elements.empty()) fail(path, no, "'property' before any 'element'");
+      PlyProperty p;
+      const bool list = tok.size() > 1 && tok[1] == "list";
+      if (tok.size() != (list ? 5u : 3u))
+        fail(path, no, list ? "expected 'property list COUNT_TYPE ITEM_TYPE NAME'" : "expected 'property TYPE NAME'");
+      p.is_list = list;
+      p.name = std::string(tok.back());
+      const std::string_view type = tok[list ? 3 : 1];
+      if (!ply_type(type, p.type)) fail(path, no, "unknown PLY type '" + std::string(type) + "'");
+      if (list && (!ply_type(tok[2], p.count_type) || !p.count_type.integer))
+        fail(path, no, "a list's length type must be an integer type, not '" + std::string(tok[2]) + "'");
+      h.elements.back().properties.push_back(p);
+    }
+  }
+}
+
+std::string where(const PlyElement& e, uint64_t i) { return "element '" + e.name + "' " + std::to_string(i); }
+
+// ASCII: an instance per line (blank lines skipped, as assimp does).
+void walk_ascii(const std::string& path, const std::string& data, const PlyHeader& h) {
+  size_t at = h.body;
+  int no = h.body_line - 1;
+  std::vector<std::string_view> tok;
+  auto next_line = [&]() {
+    while (at < data.size()) {
+      size_t end = data.find('\n', at);
+      if (end == std::string::npos) end = data.size();
+      split_tokens(std::string_view(data.data() + at, end - at), tok);
+      at = end + 1;
+      ++no;
+      if (!tok.empty() && tok[0] != "comment") return true;
+    }
+    return false;
+  };
+  for (const PlyElement& e : h.elements)
+    for (uint64_t i = 0; i < e.count; ++i) {
+      if (!next_line()) fail(path, no, "the file ends before " + where(e, i) + " (of " + std::to_string(e.count) + ")");
+      size_t t = 0;
+      auto value = [&](const char* what) {
+        if (t >= tok.size()) fail(path, no, where(e, i) + " has too few values (missing " + what + ")");
+        return tok[t++];
+      };
+      for (const PlyProperty& p : e.properties) {
+        if (!p.is_list) {
+          const std::string_view v = value(p.name.c_str());
+          double d = 0;
+          if (e.name == "vertex" && (p.name == "x" || p.name == "y" || p.name == "z") && parse_real(v, d) &&
+              !std::isfinite(d))
+            fail(path, no, "vertex " + std::to_string(i) + " has a coordinate that is NaN or infinite");
+          continue;
+        }
+        int64_t n = 0;
+        const std::string_view count = value(p.name.c_str());
+        if (!parse_integer(count, n) || n < 0)
+          fail(path, no, where(e, i) + ": list length '" + std::string(count) + "' is not a non-negative integer");
+        if (static_cast<uint64_t>(n) > kMaxPolygonVertices)
+          fail(path, no,
+               where(e, i) + " lists " + std::to_string(n) + " values (limit " + std::to_string(kMaxPolygonVertices) +
+                   ")");
+        if (static_cast<uint64_t>(n) > tok.size() - t)
+          fail(path, no,
+               where(e, i) + " claims " + std::to_string(n) + " values but its line has " +
+                   std::to_string(tok.size() - t));
+        for (int64_t k = 0; k < n; ++k) {
+          const std::string_view v = tok[t++];
+          int64_t idx = 0;
+          if (e.face_indices(p) && (!parse_integer(v, idx) || idx < 0 || static_cast<uint64_t>(idx) >= h.vertices))
+            fail(path, no,
+                 "vertex index " + std::string(v) + " is out of range (the file has " + std::to_string(h.vertices) +
+                     " vertices, counted from 0)");
+        }
+      }
+    }
+}
+
+// Binary: values packed in the file's byte order.
+class BinaryWalk {
+ public:
+  BinaryWalk(const std::string& path, const std::string& data, const PlyHeader& h)
+      : path_(path), data_(data), at_(h.body), big_(h.format == PlyFormat::kBigEndian) {}
+
+  void run(const PlyHeader& h) {
+    for (const PlyElement& e : h.elements) {
+      bool lists = false;
+      uint64_t row = 0;
+      for (const PlyProperty& p : e.properties) {
+        lists |= p.is_list;
+        row += static_cast<uint64_t>(p.type.size);
+      }
+      if (!lists) {  // fixed-size instances: one check for all of them
+        if (e.count > 0 && row > left() / e.count)
+          fail(path_, 0, "the file ends inside element '" + e.name + "' (" + std::to_string(e.count) + " x " +
+                             std::to_string(row) + " bytes from byte " + std::to_string(at_) + ")");
+        at_ += e.count * row;
+        continue;
+      }
+      for (uint64_t i = 0; i < e.count; ++i)
+        for (const PlyProperty& p : e.properties) instance_value(h, e, i, p);
+    }
+  }
+
+ private:
+  uint64_t left() const { return data_.size() - at_; }
+
+  void need(uint64_t bytes, const PlyElement& e, uint64_t i) const {
+    if (bytes > left())
+      fail(path_, 0,
+           "the file ends inside " + where(e, i) + " (at byte " + std::to_string(at_) + ", " + std::to_string(bytes) +
+               " bytes needed, " + std::to_string(left()) + " left)");
+  }
+
+  // An integer value at the cursor (which moves past it).
+  int64_t integer(const PlyType& t) {
+    uint64_t u = 0;
+    for (int k = 0; k < t.size; ++k) {
+      const int b = big_ ? k : t.size - 1 - k;
+      u = (u << 8) | static_cast<unsigned char>(data_[at_ + static_cast<size_t>(b)]);
+    }
+    at_ += static_cast<uint64_t>(t.size);
+    if (t.is_signed && t.size < 8 && (u >> (8 * t.size - 1)) != 0) return static_cast<int64_t>(u) - (int64_t{1} << (8 * t.size));
+    return static_cast<int64_t>(u);
+  }
+
+  void instance_value(const PlyHeader& h, const PlyElement& e, uint64_t i, const PlyProperty& p) {
+    if (!p.is_list) {
+      need(static_cast<uint64_t>(p.type.size), e, i);
+      at_ += static_cast<uint64_t>(p.type.size);
+      return;
+    }
+    need(static_cast<uint64_t>(p.count_type.size), e, i);
+    const uint64_t count_at = at_;
+    const int64_t n = integer(p.count_type);
+    if (n < 0 || static_cast<uint64_t>(n) > kMaxPolygonVertices)
+      fail(path_, 0,
+           where(e, i) + " (byte " + std::to_string(count_at) + ") lists " + std::to_string(n) + " values (limit " +
+               std::to_string(kMaxPolygonVertices) + ")");
+    const uint64_t bytes = static_cast<uint64_t>(n) * static_cast<uint64_t>(p.type.size);
+    if (bytes > left())
+      fail(path_, 0,
+           where(e, i) + " (byte " + std::to_string(count_at) + ") lists " + std::to_string(n) + " values: " +
+               std::to_string(bytes) + " bytes, but " + std::to_string(left()) + " are left");
+    if (!e.face_indices(p) || !p.type.integer) {
+      at_ += bytes;
+      return;
+    }
+    for (int64_t k = 0; k < n; ++k) {
+      const int64_t idx = integer(p.type);
+      if (idx < 0 || static_cast<uint64_t>(idx) >= h.vertices)
+        fail(path_, 0,
+             where(e, i) + ": vertex index " + std::to_string(idx) + " is out of range (the file has " +
+                 std::to_string(h.vertices) + " vertices, counted from 0)");
+    }
+  }
+
+  const std::string& path_;
+  const std::string& data_;
+  uint64_t at_;
+  bool big_;
+};
+
+}  // namespace
+
+void precheck_ply(const std::string& path, uint64_t size) {
+  std::ifstream in(path, std::ios::binary);
+  std::string data;
+  data.resize(static_cast<size_t>(size));
+  in.read(data.data(), static_cast<std::streamsize>(size));
+  data.resize(static_cast<size_t>(in.gcount()));
+  const PlyHeader h = read_header(path, data);
+  if (h.format == PlyFormat::kAscii) walk_ascii(path, data, h);
+  else BinaryWalk(path, data, h).run(h);
+}
+
+}  // namespace girtd
