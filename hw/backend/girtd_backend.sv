@@ -13,8 +13,11 @@ module girtd_backend (
     input  logic [15:0] had_blend_ticks_i,
     input  logic [15:0] vram_cycle_ticks_i,
     input  logic [23:0] clear_ticks_i,
+    input  logic [23:0] vram_steal_period_ticks_i,
     input  logic [$clog2(girtd_pkg::FIFO_MAX_DEPTH + 1)-1:0] fifo_limit_i,
     input  logic        write_behind_i,
+    input  logic        prefetch_i,
+    input  logic        dirty_bits_i,
     input  logic        one_minus_exact_i,
     input  logic        walk_fix_i,
     input  logic        pipelined_compare_i,
@@ -83,14 +86,14 @@ module girtd_backend (
   logic [16*40-1:0] vram_wdata, vram_rdata;
   had u_had (
       .clk_i, .rst_ni, .access_ticks_i(had_access_ticks_i), .blend_ticks_i(had_blend_ticks_i),
-      .one_minus_exact_i, .write_behind_i, .fifo_empty_i(fifo_empty), .fifo_data_i(fifo_data),
+      .one_minus_exact_i, .write_behind_i, .prefetch_i, .dirty_bits_i, .fifo_empty_i(fifo_empty), .fifo_data_i(fifo_data),
       .fifo_pop_o(fifo_pop), .vram_req_o(vram_req), .vram_we_o(vram_we), .vram_page_o(vram_page),
       .vram_wdata_o(vram_wdata), .vram_rdata_i(vram_rdata), .vram_busy_i(vram_busy), .vram_done_i(vram_done),
       .flush_i, .idle_o(had_idle), .written_o, .blended_o, .z_rejected_o, .dropped_o, .page_misses_o,
       .busy_ticks_o(had_busy_ticks_o), .vram_wait_ticks_o(had_vram_wait_ticks_o));
 
   vram u_vram (
-      .clk_i, .rst_ni, .cycle_ticks_i(vram_cycle_ticks_i), .clear_ticks_i, .req_i(vram_req), .we_i(vram_we),
+      .clk_i, .rst_ni, .cycle_ticks_i(vram_cycle_ticks_i), .clear_ticks_i, .steal_period_ticks_i(vram_steal_period_ticks_i), .req_i(vram_req), .we_i(vram_we),
       .page_i(vram_page), .wdata_i(vram_wdata), .rdata_o(vram_rdata), .busy_o(vram_busy), .done_o(vram_done),
       .clear_i, .background_i, .swap_i, .front_o);
 

@@ -10,6 +10,9 @@ module vram (
     input  logic            rst_ni,
     input  logic [15:0]     cycle_ticks_i,
     input  logic [23:0]     clear_ticks_i,
+    // Refresh and video scan-out (option): every steal_period_ticks_i ticks
+    // (0 = never) one random-port cycle is taken for a serial transfer.
+    input  logic [23:0]     steal_period_ticks_i,
     // Random port: one page per request
     input  logic            req_i,
     input  logic            we_i,
@@ -26,17 +29,22 @@ module vram (
 );
   logic [63:0] mem[1 << 20]  /*verilator public*/;
   logic [23:0] left_q;  // ticks left in the current operation
-  logic busy_q, we_q, front_q, clearing_q;
+  logic busy_q, we_q, front_q, clearing_q, stealing_q;
   logic [15:0] page_q;
   logic [16*40-1:0] wdata_q;
   logic [23:0] bg_q;
   logic finishing;
+  logic [23:0] steal_count_q;
+  logic steal_due_q;
 
   // An operation ends on the tick its count reaches 1; a new one can be
   // accepted on that same tick, so back-to-back cycles leave no gap.
+  logic port_busy, clear_pending_q;
   assign finishing = busy_q && left_q == 24'd1;
-  assign busy_o = busy_q && !finishing;
-  assign done_o = finishing && !clearing_q;
+  assign port_busy = busy_q && !finishing;
+  // A due stolen cycle or a pending clear goes before any request.
+  assign busy_o = port_busy || steal_due_q || clear_pending_q || clear_i;
+  assign done_o = finishing && !clearing_q && !stealing_q;
   assign front_o = front_q;
 
   always_ff @(posedge clk_i) begin
@@ -44,20 +52,39 @@ module vram (
       busy_q <= 1'b0;
       front_q <= 1'b0;
       clearing_q <= 1'b0;
+      stealing_q <= 1'b0;
+      clear_pending_q <= 1'b0;
+      steal_count_q <= '0;
+      steal_due_q <= 1'b0;
       left_q <= '0;
     end else begin
       if (swap_i) front_q <= !front_q;
+      if (steal_period_ticks_i != 0) begin
+        if (steal_count_q + 1'b1 >= steal_period_ticks_i) begin
+          steal_count_q <= '0;
+          steal_due_q <= 1'b1;
+        end else steal_count_q <= steal_count_q + 1'b1;
+      end
       if (busy_q) left_q <= left_q - 1'b1;
       if (finishing) begin
         busy_q <= 1'b0;
         clearing_q <= 1'b0;
+        stealing_q <= 1'b0;
       end
-      if (!busy_o && clear_i) begin
+      if (clear_i) clear_pending_q <= 1'b1;
+      if (!port_busy && steal_due_q) begin  // a stolen cycle goes first and moves no pixel data
+        steal_due_q <= 1'b0;
+        busy_q <= 1'b1;
+        we_q <= 1'b0;
+        left_q <= cycle_ticks_i == 0 ? 24'd1 : {8'd0, cycle_ticks_i};
+        stealing_q <= 1'b1;
+      end else if (!port_busy && (clear_pending_q || clear_i)) begin
+        clear_pending_q <= 1'b0;
         busy_q <= 1'b1;
         clearing_q <= 1'b1;
         bg_q <= background_i;
         left_q <= clear_ticks_i == 0 ? 24'd1 : clear_ticks_i;
-      end else if (!busy_o && req_i) begin
+      end else if (!port_busy && req_i) begin
         busy_q <= 1'b1;
         we_q <= we_i;
         page_q <= page_i;
@@ -72,7 +99,7 @@ module vram (
   // a loop); the array is only read combinationally, outside this block.
   /* verilator lint_off BLKSEQ */
   always_ff @(posedge clk_i) begin
-    if (rst_ni && finishing) begin
+    if (rst_ni && finishing && !stealing_q) begin
       if (clearing_q) begin
         for (int a = 0; a < (1 << 20); a++)
           mem[a] = front_q ? {bg_q, mem[a][39:16], 16'hFFFF} : {mem[a][63:40], bg_q, 16'hFFFF};

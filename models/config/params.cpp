@@ -75,9 +75,11 @@ Params build(const json& j, const std::string& origin) {
     p.had_blend_extra_ns = j.at("had").at("blend_extra_ns").get<double>();
     p.had_write_behind = j.at("had").at("write_behind").get<bool>();
     p.had_prefetch = j.at("had").at("prefetch").get<bool>();
+    p.had_dirty_bits = j.at("had").at("dirty_bits").get<bool>();
     p.vram_cycle_ns = j.at("vram").at("cycle_ns").get<double>();
     p.vram_serial_ns = j.at("vram").at("serial_ns").get<double>();
     p.vram_serial_transfers = j.at("vram").at("serial_transfers").get<int>();
+    p.vram_steal_every_ns = j.at("vram").at("steal_every_ns").get<double>();
     p.base_tick_ns = j.at("timing").at("base_tick_ns").get<double>();
     p.fifo_dda_had_depth = j.at("fifo").at("dda_had_depth").get<int>();
     p.fifo_max_depth = j.at("fifo").at("max_depth").get<int>();
@@ -113,6 +115,8 @@ Params build(const json& j, const std::string& origin) {
   if (p.dda_clock_ns <= 0 || p.had_access_ns <= 0 || p.vram_cycle_ns <= 0 || p.base_tick_ns <= 0 ||
       p.had_blend_extra_ns < 0 || p.vram_serial_ns < 0)
     throw InputError(origin, 0, "clock periods must be positive");
+  if (p.vram_steal_every_ns < 0 || p.vram_steal_every_ns / p.base_tick_ns > 16777215)
+    throw InputError(origin, 0, "vram.steal_every_ns must be 0 (off) or a positive period below 2^24 ticks");
   for (double ns : {p.dda_clock_ns, p.had_access_ns, p.had_blend_extra_ns, p.vram_cycle_ns, p.vram_serial_ns}) {
     const double t = ns / p.base_tick_ns;
     if (std::fabs(t - std::round(t)) > 1e-9 || t > 65535)

@@ -45,9 +45,11 @@ struct Params {
   double had_blend_extra_ns;  // multiplier + adder time of a blended pixel (§6)
   bool had_write_behind;      // 5.2.2 improvements, off in the thesis' design
   bool had_prefetch;
+  bool had_dirty_bits;        // skip writing back a page no pixel was written to
   double vram_cycle_ns;
   double vram_serial_ns;      // serial-port transfer, used by the frame clear (§7)
   int vram_serial_transfers;
+  double vram_steal_every_ns;  // refresh / scan-out takes one VRAM cycle this often (0: never)
   double base_tick_ns;        // the RTL back end's common clock; every period is a multiple
 
   int fifo_dda_had_depth;

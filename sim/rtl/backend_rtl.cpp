@@ -32,8 +32,11 @@ BackendRtl::BackendRtl(const Params& p, uint32_t x_seed) : impl_(std::make_uniqu
   t.had_blend_ticks_i = static_cast<uint16_t>(p.ticks(p.had_blend_extra_ns));
   t.vram_cycle_ticks_i = static_cast<uint16_t>(p.ticks(p.vram_cycle_ns));
   t.clear_ticks_i = static_cast<uint32_t>(p.vram_serial_transfers * (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)));
+  t.vram_steal_period_ticks_i = static_cast<uint32_t>(p.ticks(p.vram_steal_every_ns));
   t.fifo_limit_i = static_cast<uint8_t>(p.fifo_dda_had_depth);
   t.write_behind_i = p.had_write_behind;
+  t.prefetch_i = p.had_prefetch;
+  t.dirty_bits_i = p.had_dirty_bits;
   t.one_minus_exact_i = p.one_minus_nf == OneMinusNf::kExact;
   t.walk_fix_i = p.walk_fix;
   t.pipelined_compare_i = p.xy_compare_pipelined;
@@ -62,7 +65,7 @@ void BackendRtl::drain() {
     t.clk_i = 0;
     t.eval();
     if (t.idle_o) return;
-    if (guard > (uint64_t{1} << 32)) throw std::logic_error("RTL back end never went idle");
+    if (guard > (uint64_t{1} << 28)) throw std::logic_error("RTL back end did not go idle within 2^28 ticks (a deadlock)");
     tick();
   }
 }
@@ -87,7 +90,7 @@ void BackendRtl::draw(const DdaParams& d) {
     const bool taken = t.in_ready_o;  // ready only on a DDA clock: the load happens at this edge
     tick();
     if (taken) break;
-    if (guard > (uint64_t{1} << 32)) throw std::logic_error("RTL DDA never took a parameter set");
+    if (guard > (uint64_t{1} << 28)) throw std::logic_error("RTL DDA did not take a parameter set within 2^28 ticks");
   }
   t.in_valid_i = 0;
 }
