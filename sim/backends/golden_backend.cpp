@@ -27,8 +27,12 @@ void GoldenBackend::begin(const Trace& trace) {
                        "Q must be 0 or a power of two 1/16..8 for the hardware back ends (Norm is a shift)");
 }
 
-void GoldenBackend::run_dda(const DdaParams& p, Had& had, RunStats& stats) {
-  const DdaRunStats one = engine_.run(p, [&](const DdaEmit& e) {
+namespace {
+
+// One triangle through a sequencer (the hardware DDA or DDApix) into the HAD.
+template <typename Sequencer>
+void traverse(const Sequencer& seq, const DdaParams& p, Had& had, RunStats& stats) {
+  const DdaRunStats one = seq.run(p, [&](const DdaEmit& e) {
     ++stats.pixels_generated;
     had.update(e.pixel);
   });
@@ -37,18 +41,15 @@ void GoldenBackend::run_dda(const DdaParams& p, Had& had, RunStats& stats) {
   ++stats.triangles_drawn;
 }
 
+}  // namespace
+
+void GoldenBackend::run_dda(const DdaParams& p, Had& had, RunStats& stats) { traverse(engine_, p, had, stats); }
+
 // The thesis appendix's program: prepdda and DDApix in its own formats.
 void GoldenBackend::run_thesis(const Triangle& t, Had& had, RunStats& stats) {
   ++stats.triangles_in;
   const auto p = thesis_prepare(t.v, thesis_params_);
-  if (!p) return;
-  const DdaRunStats one = ddapix_.run(*p, [&](const DdaEmit& e) {
-    ++stats.pixels_generated;
-    had.update(e.pixel);
-  });
-  if (!stats.dda) stats.dda = DdaRunStats{};
-  accumulate(*stats.dda, one);
-  ++stats.triangles_drawn;
+  if (p) traverse(ddapix_, *p, had, stats);
 }
 
 void GoldenBackend::draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) {
