@@ -1,0 +1,64 @@
+// Cycle-approximate timing of GIRTD's back end (DDA -> FIFO -> HAD + cache
+// -> VRAM), pixel by pixel instead of tick by tick: the event model the
+// approx back end will use. It follows hw/backend's rules in base ticks: the
+// DDA acts on every dda-period-th tick and waits while the FIFO is full; the
+// HAD pops a pixel, spends an access (plus a blend) on a hit, and on a page
+// miss writes the old page back and fetches the new one (two VRAM cycles).
+// Models the design as written (no write-behind, prefetch, dirty bits or
+// stolen cycles). Checked against the RTL's tick counts by
+// testbench/unit/test_backend_timing.cpp.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "config/params.hpp"
+#include "had/had.hpp"
+
+namespace girtd {
+
+struct TimedPixel {
+  uint64_t cycle;      // DDA clock the pixel leaves, within its triangle (golden DdaEmit::cycle)
+  int x, y;
+  HadOutcome outcome;  // what the HAD does with it (from the golden HAD)
+};
+
+struct BackendTiming {
+  uint64_t ticks = 0;            // base ticks since the model started
+  uint64_t dda_clocks = 0;       // DDA clocks on triangles (loads excluded)
+  uint64_t dda_wait_clocks = 0;  // DDA clocks lost on a full FIFO
+  uint64_t page_misses = 0;
+  uint64_t pixels = 0;
+  int fifo_max = 0;
+};
+
+class BackendTimingModel {
+ public:
+  explicit BackendTimingModel(const Params& p);
+
+  void begin_frame();  // the serial-port clear; the cache starts empty
+  // One triangle: its DDA clock count and its pixels in emission order.
+  void triangle(uint64_t dda_cycles, const std::vector<TimedPixel>& pixels);
+  void end_frame();    // drain, write the cache page back, swap
+
+  const BackendTiming& timing() const { return t_; }
+
+ private:
+  uint64_t next_en(uint64_t tick) const;  // first DDA-enabled tick at or after `tick`
+  void push(const TimedPixel& p, uint64_t tick);
+  uint64_t fifo_count_at(uint64_t tick) const;  // pushed before `tick` and not popped before it
+  void drain();
+
+  int period_, access_, blend_, vram_, limit_;
+  uint64_t clear_ticks_;
+  uint64_t dda_at_ = 0;    // the DDA's next enabled tick
+  uint64_t had_free_ = 0;  // the HAD's next IDLE tick
+  bool cache_valid_ = false;
+  int cache_page_ = -1;
+  std::deque<uint64_t> pops_;  // pop ticks of pixels possibly still in the FIFO
+  std::deque<uint64_t> pushes_;
+  BackendTiming t_;
+};
+
+}  // namespace girtd
