@@ -2,16 +2,7 @@
 # End-to-end checks of the girtd command line (CONTRACT.md): outputs, report
 # keys, exit codes and the one-line error format, dump and replay.
 # Usage: test_cli.sh GIRTD_BINARY REPO_ROOT
-set -uo pipefail
-GIRTD="$1"
-ROOT="$2"
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-cd "$ROOT"
-fails=0
-passes=0
-ok() { passes=$((passes + 1)); }
-bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh" "$1" "$2"
 
 # 1. A render writes frame.png, report.json and report.md with every contract key.
 "$GIRTD" render traces/equilateral_200.trace --backend golden --out "$TMP/eq" --quiet && ok || bad "render exit"
@@ -65,5 +56,4 @@ h2=$(grep -o '"image_sha256": "[0-9a-f]*"' "$TMP/z2/report.json")
 "$GIRTD" claims > "$TMP/claims" && ok || bad "claims exit"
 grep -q "not yet measured" "$TMP/claims" && grep -q "DDA efficiency" "$TMP/claims" && ok || bad "claims table"
 
-echo "$passes passed, $fails failed"
-[[ $fails -eq 0 ]]
+finish

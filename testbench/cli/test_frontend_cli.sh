@@ -3,16 +3,7 @@
 # renders, the report counts the front end, polygon dump and replay agree, and
 # broken models and scenes give exit 2, one line FILE:LINE: what, no output.
 # Usage: test_frontend_cli.sh GIRTD_BINARY REPO_ROOT
-set -uo pipefail
-GIRTD=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-ROOT=$(cd "$2" && pwd)  # absolute: scenes written to $TMP name models under it
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-cd "$ROOT"
-fails=0
-passes=0
-ok() { passes=$((passes + 1)); }
-bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh" "$1" "$2"
 
 # 1. OBJ, PLY, STL and OFF models render with a front-end report.
 for m in cube.obj sphere.ply sphere.stl torus.off; do
@@ -82,5 +73,4 @@ printf '%s' '{"girtd_scene": 1,
 "$GIRTD" render "$TMP/badn.json" --out "$TMP/badn" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 ]] && grep -qE 'badn.json:2: "materials/a/b/n" = 500 is outside 1..200' "$TMP/err" && ok || bad "n = 500 under a/b: exit $rc, '$(cat "$TMP/err")'"
 
-echo "$passes passed, $fails failed"
-[[ $fails -eq 0 ]]
+finish
