@@ -13,6 +13,7 @@
 #include "cli/output_set.hpp"
 #include "common/input_error.hpp"
 #include "io/trace_reader.hpp"
+#include "rtl/timing_comparison.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -86,8 +87,36 @@ int run_bench(const std::string& config, const std::string& out_dir) {
       std::fflush(stdout);
     }
   }
+  // The back end's two timing engines on the same traces: the Verilated RTL
+  // and the event model behind the approx back end.
+  std::string md2 =
+      "\n## Back-end timing: RTL against the event model\n\n"
+      "| trace | pixels | RTL modeled ms | model modeled ms | difference | RTL wall s | model wall s | speed-up | "
+      "RTL DDA clocks per wall s |\n|---|---|---|---|---|---|---|---|---|\n";
+  nlohmann::json timing_rows = nlohmann::json::array();
+  for (const std::string& path : sample_traces()) {
+    if (header_level(path) != TraceLevel::kTriangle) continue;
+    const TimingComparison c = compare_timing(params, path);
+    const double rtl_ms = double(c.rtl.ticks) * params.base_tick_ns * 1e-6;
+    const double model_ms = double(c.model.ticks) * params.base_tick_ns * 1e-6;
+    const double diff = rtl_ms > 0 ? (model_ms - rtl_ms) / rtl_ms : 0;
+    timing_rows.push_back({{"trace", path}, {"pixels", c.model.pixels}, {"rtl_modeled_s", rtl_ms * 1e-3},
+                           {"model_modeled_s", model_ms * 1e-3}, {"rtl_wall_s", c.rtl_wall_s},
+                           {"model_wall_s", c.model_wall_s},
+                           {"rtl_dda_clocks_per_wall_s", double(c.rtl.dda_clocks) / c.rtl_wall_s}});
+    char line[512];
+    std::snprintf(line, sizeof line, "| %s | %llu | %.3f | %.3f | %+.5f %% | %.3f | %.3f | %.1fx | %.2e |\n",
+                  fs::path(path).filename().c_str(), static_cast<unsigned long long>(c.model.pixels), rtl_ms, model_ms,
+                  100 * diff, c.rtl_wall_s, c.model_wall_s, c.model_wall_s > 0 ? c.rtl_wall_s / c.model_wall_s : 0,
+                  double(c.rtl.dda_clocks) / c.rtl_wall_s);
+    md2 += line;
+    std::fputs(line, stdout);
+    std::fflush(stdout);
+  }
+  md += md2;
   OutputSet files(out_dir);
-  files.add_text("bench.json", nlohmann::json{{"rows", rows}, {"config", params.source}}.dump(2) + "\n");
+  files.add_text("bench.json",
+                 nlohmann::json{{"rows", rows}, {"timing", timing_rows}, {"config", params.source}}.dump(2) + "\n");
   files.add_text("bench.md", "# girtd bench\n\nError is against the reference back end's frame (0..255 per channel).\n\n" + md);
   files.commit();
   std::printf("wrote %s and %s\n", files.path("bench.json").c_str(), files.path("bench.md").c_str());

@@ -1,0 +1,60 @@
+#include "rtl/timing_comparison.hpp"
+
+#include <chrono>
+
+#include "dda/dda_engine.hpp"
+#include "dda/dda_preparer.hpp"
+#include "had/had.hpp"
+#include "io/trace_reader.hpp"
+
+namespace girtd {
+
+TimingComparison compare_timing(const Params& p, const std::string& trace_path) {
+  using clock = std::chrono::steady_clock;
+  const Trace trace = read_trace(trace_path, std::nullopt, p);
+  DdaPreparer prep(p);
+  std::vector<std::vector<DdaParams>> frames;
+  for (const TraceFrame& f : trace.frames) {
+    frames.emplace_back(f.dda);
+    DdaParams d;
+    for (const Triangle& t : f.triangles)
+      if (prep.prepare(t, f.settings, d) == PrepareResult::kReady) frames.back().push_back(d);
+  }
+  TimingComparison c;
+
+  const auto t0 = clock::now();
+  BackendTimingModel model(p);
+  DdaEngine dda(p);
+  FrameBuffer fb(p.screen_width, p.screen_height, uint16_t(p.depth_clear));
+  Had had(fb, p.one_minus_nf);
+  std::vector<TimedPixel> pixels;
+  for (size_t i = 0; i < frames.size(); ++i) {
+    fb.clear_back(trace.frames[i].settings.background);
+    model.begin_frame();
+    for (const DdaParams& d : frames[i]) {
+      pixels.clear();
+      const DdaRunStats st = dda.run(d, [&](const DdaEmit& e) {
+        pixels.push_back({e.cycle, e.pixel.x, e.pixel.y, had.update(e.pixel)});
+      });
+      model.triangle(st.cycles, pixels);
+    }
+    model.end_frame();
+    fb.swap();
+  }
+  c.model = model.timing();
+  const auto t1 = clock::now();
+
+  BackendRtl rtl(p);
+  for (size_t i = 0; i < frames.size(); ++i) {
+    rtl.begin_frame(trace.frames[i].settings.background);
+    for (const DdaParams& d : frames[i]) rtl.draw(d);
+    rtl.end_frame();
+  }
+  c.rtl = rtl.counters();
+  const auto t2 = clock::now();
+  c.model_wall_s = std::chrono::duration<double>(t1 - t0).count();
+  c.rtl_wall_s = std::chrono::duration<double>(t2 - t1).count();
+  return c;
+}
+
+}  // namespace girtd

@@ -1,0 +1,23 @@
+// One trace through the two back-end timing engines — the Verilated RTL
+// (hw/backend) and the event model (models/timing) fed by the golden DDA and
+// HAD — with their results and wall times side by side.
+#pragma once
+
+#include <string>
+
+#include "config/params.hpp"
+#include "rtl/backend_rtl.hpp"
+#include "timing/backend_timing.hpp"
+
+namespace girtd {
+
+struct TimingComparison {
+  BackendTiming model;
+  BackendCounters rtl;
+  double model_wall_s = 0;  // golden DDA + HAD + event model
+  double rtl_wall_s = 0;    // the Verilated back end alone
+};
+
+TimingComparison compare_timing(const Params& p, const std::string& trace_path);
+
+}  // namespace girtd
