@@ -34,6 +34,8 @@ void merge_strict(json& base, const json& patch, const std::string& path, const 
   }
 }
 
+int color_out_bits(const json& j) { return j.at("ep").at("color").at("out_bits").get<int>(); }
+
 FixFormat format_of(const json& j, bool has_output) {
   FixFormat f;
   f.int_bits = j.at("int_bits").get<int>();
@@ -83,6 +85,16 @@ Params build(const json& j, const std::string& origin) {
     p.base_tick_ns = j.at("timing").at("base_tick_ns").get<double>();
     p.fifo_dda_had_depth = j.at("fifo").at("dda_had_depth").get<int>();
     p.fifo_max_depth = j.at("fifo").at("max_depth").get<int>();
+    // The FIFO word is what the DDA's outputs and the HAD's inputs are: a
+    // cross-check, so the description cannot claim a layout the design lacks.
+    const json& fb = j.at("fifo").at("field_bits");
+    const int want[7] = {color_out_bits(j), color_out_bits(j), color_out_bits(j), j.at("nf").at("norm_frac_bits").get<int>() + 1,
+                         10, 10, j.at("ep").at("z").at("out_bits").get<int>()};
+    const char* names[7] = {"r", "g", "b", "nf", "x", "y", "z"};
+    for (int i = 0; i < 7; ++i)
+      if (fb.at(names[i]).get<int>() != want[i])
+        throw InputError(origin, 0, std::string("fifo.field_bits.") + names[i] + " must be " + std::to_string(want[i]) +
+                                        " (the DDA's output and the HAD's input)");
     p.depth_clear = j.at("depth").at("clear").get<int>();
     p.depth_max_mapped = j.at("depth").at("max_mapped").get<int>();
     const json& th = j.at("thesis");
