@@ -42,6 +42,8 @@ function(girtd_generate_hw_package json_file out_dir)
   endif()
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${json_file})
   configure_file(${CMAKE_SOURCE_DIR}/cmake/girtd_pkg.sv.in ${out_dir}/girtd_pkg.sv @ONLY)
+  # What the C++ drivers must know about the built RTL (elaboration-time values).
+  configure_file(${CMAKE_SOURCE_DIR}/cmake/built_rtl.hpp.in ${CMAKE_BINARY_DIR}/generated/girtd/built_rtl.hpp @ONLY)
 
   math(EXPR top "(1 << ${PROM_FRAC}) - 1")
   math(EXPR excess "2 * ${PROM_FRAC} - 8")

@@ -114,7 +114,8 @@ module had (
   // A miss proceeds when the VRAM is free and no write-behind is pending; a
   // miss on the page being prefetched waits for it instead.
   assign miss_wait_pf = head_in_pf && pf_loading_q;
-  assign miss_go = state_q == H_IDLE && !fifo_empty_i && !flush_pending_q && !head_hit && !miss_wait_pf &&
+  // A pending flush waits for the FIFO to drain; pixels keep flowing meanwhile.
+  assign miss_go = state_q == H_IDLE && !fifo_empty_i && !head_hit && !miss_wait_pf &&
                    !vram_busy_i && !wb_pending_q && !pf_loading_q;
   assign flush_go = state_q == H_IDLE && flush_pending_q && fifo_empty_i && !vram_busy_i && !wb_pending_q &&
                     !pf_loading_q && must_write_back;
@@ -144,7 +145,7 @@ module had (
     end
     unique case (state_q)
       H_IDLE: begin
-        if (!fifo_empty_i && !flush_pending_q && head_hit) fifo_pop_o = 1'b1;
+        if (!fifo_empty_i && head_hit) fifo_pop_o = 1'b1;
         else if (miss_go) begin
           fifo_pop_o = 1'b1;
           if (must_write_back && !write_behind_i) begin  // write the old page back first
@@ -202,7 +203,7 @@ module had (
       if (cache_load) dirty_q <= 1'b0;
       if (state_q != H_IDLE || fifo_pop_o) busy_ticks_o <= busy_ticks_o + 1'b1;
       if (state_q == H_WB || state_q == H_REFETCH || (state_q == H_FETCH && !use_pf_q) ||
-          (state_q == H_IDLE && !fifo_empty_i && !head_hit && !fifo_pop_o && !flush_pending_q))
+          (state_q == H_IDLE && !fifo_empty_i && !head_hit && !fifo_pop_o))
         vram_wait_ticks_o <= vram_wait_ticks_o + 1'b1;
       unique case (state_q)
         H_IDLE: begin

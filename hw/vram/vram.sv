@@ -35,7 +35,10 @@ module vram (
   logic [23:0] bg_q;
   logic finishing;
   logic [23:0] steal_count_q;
+  logic [7:0] steals_owed_q;  // stolen cycles come due even while the port is busy
   logic steal_due_q;
+  logic buf_q;  // the back buffer of the operation in flight, fixed when it is accepted
+  assign steal_due_q = steals_owed_q != '0;
 
   // An operation ends on the tick its count reaches 1; a new one can be
   // accepted on that same tick, so back-to-back cycles leave no gap.
@@ -55,16 +58,17 @@ module vram (
       stealing_q <= 1'b0;
       clear_pending_q <= 1'b0;
       steal_count_q <= '0;
-      steal_due_q <= 1'b0;
+      steals_owed_q <= '0;
       left_q <= '0;
     end else begin
       if (swap_i) front_q <= !front_q;
       if (steal_period_ticks_i != 0) begin
-        if (steal_count_q + 1'b1 >= steal_period_ticks_i) begin
-          steal_count_q <= '0;
-          steal_due_q <= 1'b1;
-        end else steal_count_q <= steal_count_q + 1'b1;
+        if (steal_count_q + 1'b1 >= steal_period_ticks_i) steal_count_q <= '0;
+        else steal_count_q <= steal_count_q + 1'b1;
       end
+      // Owed steals: one more when the period elapses, one less when a steal starts.
+      steals_owed_q <= steals_owed_q + 8'(steal_period_ticks_i != 0 && steal_count_q + 1'b1 >= steal_period_ticks_i &&
+                                          steals_owed_q != 8'hFF) - 8'(!port_busy && steal_due_q);
       if (busy_q) left_q <= left_q - 1'b1;
       if (finishing) begin
         busy_q <= 1'b0;
@@ -73,7 +77,6 @@ module vram (
       end
       if (clear_i) clear_pending_q <= 1'b1;
       if (!port_busy && steal_due_q) begin  // a stolen cycle goes first and moves no pixel data
-        steal_due_q <= 1'b0;
         busy_q <= 1'b1;
         we_q <= 1'b0;
         left_q <= cycle_ticks_i == 0 ? 24'd1 : {8'd0, cycle_ticks_i};
@@ -82,10 +85,12 @@ module vram (
         clear_pending_q <= 1'b0;
         busy_q <= 1'b1;
         clearing_q <= 1'b1;
+        buf_q <= !front_q;
         bg_q <= background_i;
         left_q <= clear_ticks_i == 0 ? 24'd1 : clear_ticks_i;
       end else if (!port_busy && req_i) begin
         busy_q <= 1'b1;
+        buf_q <= !front_q;
         we_q <= we_i;
         page_q <= page_i;
         wdata_q <= wdata_i;
@@ -102,10 +107,10 @@ module vram (
     if (rst_ni && finishing && !stealing_q) begin
       if (clearing_q) begin
         for (int a = 0; a < (1 << 20); a++)
-          mem[a] = front_q ? {bg_q, mem[a][39:16], 16'hFFFF} : {mem[a][63:40], bg_q, 16'hFFFF};
+          mem[a] = !buf_q ? {bg_q, mem[a][39:16], 16'hFFFF} : {mem[a][63:40], bg_q, 16'hFFFF};
       end else if (we_q) begin
         for (int i = 0; i < 16; i++) begin
-          if (front_q) mem[{page_q, 4'(i)}] = {wdata_q[i*40+16+:24], mem[{page_q, 4'(i)}][39:16], wdata_q[i*40+:16]};
+          if (!buf_q) mem[{page_q, 4'(i)}] = {wdata_q[i*40+16+:24], mem[{page_q, 4'(i)}][39:16], wdata_q[i*40+:16]};
           else mem[{page_q, 4'(i)}] = {mem[{page_q, 4'(i)}][63:40], wdata_q[i*40+16+:24], wdata_q[i*40+:16]};
         end
       end
@@ -117,6 +122,6 @@ module vram (
   for (genvar i = 0; i < 16; i++) begin : g_read
     logic [63:0] word;
     assign word = mem[{page_q, 4'(i)}];
-    assign rdata_o[i*40+:40] = front_q ? {word[63:40], word[15:0]} : {word[39:16], word[15:0]};
+    assign rdata_o[i*40+:40] = !buf_q ? {word[63:40], word[15:0]} : {word[39:16], word[15:0]};
   end
 endmodule

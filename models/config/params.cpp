@@ -127,8 +127,10 @@ Params build(const json& j, const std::string& origin) {
   if (p.dda_clock_ns <= 0 || p.had_access_ns <= 0 || p.vram_cycle_ns <= 0 || p.base_tick_ns <= 0 ||
       p.had_blend_extra_ns < 0 || p.vram_serial_ns < 0)
     throw InputError(origin, 0, "clock periods must be positive");
-  if (p.vram_steal_every_ns < 0 || p.vram_steal_every_ns / p.base_tick_ns > 16777215)
-    throw InputError(origin, 0, "vram.steal_every_ns must be 0 (off) or a positive period below 2^24 ticks");
+  if (p.vram_steal_every_ns < 0 || p.vram_steal_every_ns / p.base_tick_ns > 16777215 ||
+      (p.vram_steal_every_ns > 0 && p.vram_steal_every_ns < 2 * p.vram_cycle_ns))
+    throw InputError(origin, 0,
+                     "vram.steal_every_ns must be 0 (off) or at least two VRAM cycles and below 2^24 ticks");
   for (double ns : {p.dda_clock_ns, p.had_access_ns, p.had_blend_extra_ns, p.vram_cycle_ns, p.vram_serial_ns}) {
     const double t = ns / p.base_tick_ns;
     if (std::fabs(t - std::round(t)) > 1e-9 || t > 65535)
@@ -136,6 +138,12 @@ Params build(const json& j, const std::string& origin) {
   }
   if (p.fifo_dda_had_depth < 1 || p.fifo_dda_had_depth > p.fifo_max_depth)
     throw InputError(origin, 0, "fifo.dda_had_depth must be 1..fifo.max_depth");
+  // Run-time knobs must fit the RTL's ports (hw/backend): 8-bit DDA period,
+  // 16-bit HAD and VRAM times, 24-bit clear and steal periods.
+  if (p.ticks(p.dda_clock_ns) > 255) throw InputError(origin, 0, "dda.clock_ns must be at most 255 base ticks");
+  if (uint64_t(p.vram_serial_transfers) * uint64_t(p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)) > 16777215 ||
+      p.vram_serial_transfers < 0)
+    throw InputError(origin, 0, "the frame clear (vram.serial_transfers x (serial_ns + cycle_ns)) must be below 2^24 ticks");
   p.source = j;
   return p;
 }

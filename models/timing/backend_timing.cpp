@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "common/input_error.hpp"
+
 namespace girtd {
 
 BackendTimingModel::BackendTimingModel(const Params& p)
@@ -10,7 +12,12 @@ BackendTimingModel::BackendTimingModel(const Params& p)
       blend_(p.ticks(p.had_blend_extra_ns)),
       vram_(p.ticks(p.vram_cycle_ns)),
       limit_(p.fifo_dda_had_depth),
-      clear_ticks_(uint64_t(p.vram_serial_transfers) * (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns))) {}
+      clear_ticks_(uint64_t(p.vram_serial_transfers) * (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns))) {
+  if (p.had_write_behind || p.had_prefetch || p.had_dirty_bits || p.vram_steal_every_ns > 0)
+    throw InputError("--config", 0,
+                     "the back-end timing model covers the design as written: turn off had.write_behind, "
+                     "had.prefetch, had.dirty_bits and vram.steal_every_ns");
+}
 
 uint64_t BackendTimingModel::next_en(uint64_t tick) const {
   return (tick + period_ - 1) / period_ * period_;

@@ -5,7 +5,8 @@
 // HAD pops a pixel, spends an access (plus a blend) on a hit, and on a page
 // miss writes the old page back and fetches the new one (two VRAM cycles).
 // Models the design as written (no write-behind, prefetch, dirty bits or
-// stolen cycles). Checked against the RTL's tick counts by
+// stolen cycles: the constructor refuses them). A cache hit takes at least
+// two ticks, as in the RTL. Checked against the RTL's tick counts by
 // testbench/unit/test_backend_timing.cpp.
 #pragma once
 

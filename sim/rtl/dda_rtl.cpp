@@ -3,6 +3,8 @@
 #include <stdexcept>
 
 #include "Vdda.h"
+#include "common/input_error.hpp"
+#include "girtd/built_rtl.hpp"
 #include "rtl/port_access.hpp"
 #include "verilated.h"
 #if VM_COVERAGE
@@ -44,7 +46,11 @@ struct DdaRtl::Impl {
   void load_ports(const DdaParams& d) { load_dda_ports(*top, d, params); }
 };
 
-DdaRtl::DdaRtl(const Params& p, uint32_t x_seed) : impl_(std::make_unique<Impl>(p, x_seed)) {}
+DdaRtl::DdaRtl(const Params& p, uint32_t x_seed) : impl_(std::make_unique<Impl>(p, x_seed)) {
+  if (p.output_latency_clocks != kBuiltOutputLatency)
+    throw InputError("--config", 0, "dda.output_latency_clocks: the RTL is built with " +
+                                        std::to_string(kBuiltOutputLatency) + " (change config/girtd.json and rebuild)");
+}
 DdaRtl::~DdaRtl() { impl_->top->final(); }
 
 DdaRtlResult DdaRtl::run(const DdaParams& in, const DdaEngine::PixelSink& sink, const DdaRtlOptions& opt) {
