@@ -30,26 +30,23 @@ EfficiencySample measure_equilateral(const Params& base, Orientation o, double q
 
   EfficiencySample s;
   s.min_wasted = s.min_efficiency = 1e300;
-  for (int j = 0; j < 8; ++j) {
-    for (int i = 0; i < 8; ++i) {
-      const double cx = 512 + (i + 0.5) / 8, cy = 512 + (j + 0.5) / 8;
-      const double a = o == Orientation::kApexUp ? 0 : o == Orientation::kApexDown ? M_PI : angle(rng);
-      const Triangle t = equilateral_200(cx, cy, a);
-      DdaParams dp;
-      if (prep.prepare(t, f, dp) != PrepareResult::kReady) continue;
-      const DdaRunStats r = dda.run(dp, {});
-      const double eff = double(r.emitted) / double(r.cycles);
-      s.mean_emitted += double(r.emitted);
-      s.mean_wasted += double(r.wasted());
-      s.min_wasted = std::min(s.min_wasted, double(r.wasted()));
-      s.max_wasted = std::max(s.max_wasted, double(r.wasted()));
-      s.mean_efficiency += eff;
-      s.min_efficiency = std::min(s.min_efficiency, eff);
-      s.max_efficiency = std::max(s.max_efficiency, eff);
-      s.mean_thesis_wasted += thesis_wasted_states(t);
-      ++s.triangles;
-    }
-  }
+  for_each_subpixel_position(512, 512, [&](double cx, double cy) {
+    const double a = o == Orientation::kApexUp ? 0 : o == Orientation::kApexDown ? M_PI : angle(rng);
+    const Triangle t = equilateral_200(cx, cy, a);
+    DdaParams dp;
+    if (prep.prepare(t, f, dp) != PrepareResult::kReady) return;
+    const DdaRunStats r = dda.run(dp, {});
+    const double eff = double(r.emitted) / double(r.cycles);
+    s.mean_emitted += double(r.emitted);
+    s.mean_wasted += double(r.wasted());
+    s.min_wasted = std::min(s.min_wasted, double(r.wasted()));
+    s.max_wasted = std::max(s.max_wasted, double(r.wasted()));
+    s.mean_efficiency += eff;
+    s.min_efficiency = std::min(s.min_efficiency, eff);
+    s.max_efficiency = std::max(s.max_efficiency, eff);
+    s.mean_thesis_wasted += thesis_wasted_states(t);
+    ++s.triangles;
+  });
   const double n = std::max(1, s.triangles);
   s.mean_emitted /= n;
   s.mean_wasted /= n;

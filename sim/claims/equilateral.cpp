@@ -24,6 +24,11 @@ Triangle equilateral_200(double cx, double cy, double angle, double z) {
   return t;
 }
 
+void for_each_subpixel_position(double x0, double y0, const std::function<void(double, double)>& fn) {
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i) fn(x0 + (i + 0.5) / 8, y0 + (j + 0.5) / 8);
+}
+
 double thesis_wasted_states(const Triangle& t) {
   // Centroid tells which side of each edge is outward.
   const double gx = (t.v[0].x + t.v[1].x + t.v[2].x) / 3.0;

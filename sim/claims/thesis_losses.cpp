@@ -77,21 +77,19 @@ ThesisEfficiency measure_thesis_equilateral(const Params& base, bool apex_up) {
   const DdaPix ddapix(p, ThesisInside::kProgram);
   ThesisEfficiency r;
   int n = 0;
-  for (int j = 0; j < 8; ++j) {
-    for (int i = 0; i < 8; ++i) {
-      const Triangle t = equilateral_200(64 + (i + 0.5) / 8, 48 + (j + 0.5) / 8, apex_up ? 0 : M_PI);
-      std::array<ThesisVertex, 3> v;
-      for (int k = 0; k < 3; ++k) v[k] = to_thesis_units(t.v[k], p.thesis.kc);
-      const auto d = thesis_prepare(v, p);
-      if (!d) continue;
-      const DdaRunStats st = ddapix.run(*d, {});
-      r.mean_emitted += double(st.emitted);
-      r.mean_wasted += double(st.wasted());
-      r.mean_efficiency += double(st.emitted) / double(st.cycles);
-      r.mean_formula += thesis_wasted_states(t);
-      ++n;
-    }
-  }
+  for_each_subpixel_position(64, 48, [&](double cx, double cy) {
+    const Triangle t = equilateral_200(cx, cy, apex_up ? 0 : M_PI);
+    std::array<ThesisVertex, 3> v;
+    for (int k = 0; k < 3; ++k) v[k] = to_thesis_units(t.v[k], p.thesis.kc);
+    const auto d = thesis_prepare(v, p);
+    if (!d) return;
+    const DdaRunStats st = ddapix.run(*d, {});
+    r.mean_emitted += double(st.emitted);
+    r.mean_wasted += double(st.wasted());
+    r.mean_efficiency += double(st.emitted) / double(st.cycles);
+    r.mean_formula += thesis_wasted_states(t);
+    ++n;
+  });
   if (n > 0) {
     r.mean_emitted /= n;
     r.mean_wasted /= n;

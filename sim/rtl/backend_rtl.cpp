@@ -32,9 +32,7 @@ BackendRtl::BackendRtl(const Params& p, uint32_t x_seed) : impl_(std::make_uniqu
   if (p.fifo_max_depth != kBuiltFifoDepth || p.fifo_dda_had_depth > kBuiltFifoDepth)
     throw InputError("--config", 0, "fifo.max_depth / dda_had_depth: the RTL FIFO is built " +
                                         std::to_string(kBuiltFifoDepth) + " deep (change config/girtd.json and rebuild)");
-  if (p.output_latency_clocks != kBuiltOutputLatency)
-    throw InputError("--config", 0, "dda.output_latency_clocks: the RTL is built with " +
-                                        std::to_string(kBuiltOutputLatency) + " (change config/girtd.json and rebuild)");
+  require_built_output_latency(p);
   Vgirtd_backend& t = *impl_->top;
   t.dda_period_ticks_i = static_cast<uint8_t>(p.ticks(p.dda_clock_ns));
   t.had_access_ticks_i = static_cast<uint16_t>(p.ticks(p.had_access_ns));

@@ -3,8 +3,6 @@
 #include <stdexcept>
 
 #include "Vdda.h"
-#include "common/input_error.hpp"
-#include "girtd/built_rtl.hpp"
 #include "rtl/port_access.hpp"
 #include "verilated.h"
 #if VM_COVERAGE
@@ -47,9 +45,7 @@ struct DdaRtl::Impl {
 };
 
 DdaRtl::DdaRtl(const Params& p, uint32_t x_seed) : impl_(std::make_unique<Impl>(p, x_seed)) {
-  if (p.output_latency_clocks != kBuiltOutputLatency)
-    throw InputError("--config", 0, "dda.output_latency_clocks: the RTL is built with " +
-                                        std::to_string(kBuiltOutputLatency) + " (change config/girtd.json and rebuild)");
+  require_built_output_latency(p);
 }
 DdaRtl::~DdaRtl() { impl_->top->final(); }
 

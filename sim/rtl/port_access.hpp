@@ -3,13 +3,24 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <type_traits>
 
+#include "common/input_error.hpp"
 #include "common/triangle_setup.hpp"
 #include "config/params.hpp"
 #include "dda/dda_params.hpp"
+#include "girtd/built_rtl.hpp"
 
 namespace girtd {
+
+// The DDA's output registers are an elaboration value of the RTL: a
+// configuration asking for another depth needs a rebuild.
+inline void require_built_output_latency(const Params& p) {
+  if (p.output_latency_clocks != kBuiltOutputLatency)
+    throw InputError("--config", 0, "dda.output_latency_clocks: the RTL is built with " +
+                                        std::to_string(kBuiltOutputLatency) + " (change config/girtd.json and rebuild)");
+}
 
 template <typename Port>
 void set_port(Port& port, int64_t value, int bits) {
