@@ -1,0 +1,205 @@
+#include "frontend/front_end_stages.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/triangle_setup.hpp"
+#include "frontend/depth_clip.hpp"
+#include "frontend/polygon_shape.hpp"
+#include "frontend/vertex_lighting.hpp"
+#include "frontend/vertex_normals.hpp"
+#include "frontend/view_transform.hpp"
+
+namespace girtd {
+namespace {
+
+bool is_back_face(const WorldPolygon& poly, const Vec3& eye) {
+  Vec3 centroid;
+  for (const Vec3& p : poly.p) centroid = centroid + p;
+  centroid = centroid * (1.0 / static_cast<double>(poly.p.size()));
+  return dot(newell_normal(poly.p), centroid - eye) >= 0;
+}
+
+// The polygon in 2D coordinates of its own Newell plane (counter-clockwise
+// about the normal). `planar` reports whether it lies in that plane.
+std::vector<Point2> plane_coordinates(const std::vector<CameraVertex>& v, bool& planar) {
+  std::vector<Vec3> s;
+  for (const CameraVertex& c : v) s.push_back(c.s);
+  const Vec3 n = normalized(newell_normal(s));
+  // u: any unit vector in the plane, from the axis least aligned with n.
+  const Vec3 axis = std::fabs(n.x) <= std::fabs(n.y) && std::fabs(n.x) <= std::fabs(n.z) ? Vec3{1, 0, 0}
+                    : std::fabs(n.y) <= std::fabs(n.z)                                    ? Vec3{0, 1, 0}
+                                                                                          : Vec3{0, 0, 1};
+  const Vec3 u = normalized(cross(n, axis));
+  const Vec3 w = cross(n, u);
+  Vec3 centroid;
+  for (const Vec3& p : s) centroid = centroid + p;
+  centroid = centroid * (1.0 / static_cast<double>(s.size()));
+  double radius = 0, off_plane = 0;
+  std::vector<Point2> out;
+  for (const Vec3& p : s) {
+    const Vec3 d = p - centroid;
+    radius = std::max(radius, length(d));
+    off_plane = std::max(off_plane, std::fabs(dot(d, n)));
+    out.push_back({dot(d, u), dot(d, w)});
+  }
+  planar = off_plane <= kNonPlanarTolerance * radius;
+  return out;
+}
+
+}  // namespace
+
+void FrontEndStages::begin_frame(const WorldFrame& frame, const Window& window) {
+  frame_ = &frame;
+  window_ = window;
+  normals_ = vertex_normals(frame.polygons);
+  zmin_ = std::numeric_limits<double>::infinity();
+  zmax_ = -zmin_;
+  created_any_ = false;
+}
+
+std::optional<FrontPolygon> FrontEndStages::light(size_t i) {
+  const WorldFrame& frame = *frame_;
+  const WorldPolygon& poly = frame.polygons[i];
+  ++counts_.polygons;
+  if (has_no_area(poly.p)) {  // decided in world space, before culling: no area has no facing
+    ++counts_.degenerate_polygons;
+    return std::nullopt;
+  }
+  const Camera& cam = frame.camera;
+  if (frame.cull_back_faces && is_back_face(poly, cam.centre)) {
+    ++counts_.culled;
+    return std::nullopt;
+  }
+  const Surface& surface = frame.surfaces.at(static_cast<size_t>(poly.surface));
+  FrontPolygon out;
+  out.source = i;
+  for (size_t k = 0; k < poly.p.size(); ++k) {
+    const LitVertex lit = light_vertex(surface, frame.lights, normals_[i][k], normalized(cam.centre - poly.p[k]));
+    out.v.push_back({poly.p[k], lit.r, lit.g, lit.b, lit.t, false});
+  }
+  return out;
+}
+
+void FrontEndStages::view(FrontPolygon& p) const {
+  for (CameraVertex& v : p.v) v.s = to_camera_space(frame_->camera, v.s);
+}
+
+std::optional<FrontPolygon> FrontEndStages::depth_clip(const FrontPolygon& p) {
+  const double c = frame_->focal_distance;
+  FrontPolygon out{p.source, girtd::depth_clip(p.v, c)};
+  if (out.v.empty()) {
+    ++counts_.clipped_away;
+    return std::nullopt;
+  }
+  if (std::any_of(p.v.begin(), p.v.end(), [&](const CameraVertex& v) { return v.s.z <= c; })) ++counts_.clipped;
+  return out;
+}
+
+void FrontEndStages::note_depths(const FrontPolygon& p) {
+  for (const CameraVertex& v : p.v) {
+    if (v.created) {
+      created_any_ = true;
+      continue;
+    }
+    zmin_ = std::min(zmin_, v.s.z);
+    zmax_ = std::max(zmax_, v.s.z);
+  }
+}
+
+DepthMap FrontEndStages::depth_map() const {
+  // Vertices made at Zs = C join the depth range (Zmin = C): every Zp stays
+  // exact and in 0..P, at the price of depth resolution in that frame.
+  double zmin = zmin_, zmax = zmax_;
+  if (created_any_) {
+    const double c = frame_->focal_distance;
+    zmin = std::min(zmin, c);
+    zmax = std::max(zmax, c);
+  }
+  return DepthMap(zmin, zmax, depth_max_);
+}
+
+std::optional<ScreenPolygon> FrontEndStages::project(const FrontPolygon& p, const DepthMap& depth) {
+  // The clip may make a corner twice (a vertex on Zs = C) or a sliver with
+  // no area left: the same tests as for the input.
+  ScreenPolygon out{p.source, p.v, {}};
+  drop_repeated_corners(out.v, [](const CameraVertex& a, const CameraVertex& b) {
+    return a.s.x == b.s.x && a.s.y == b.s.y && a.s.z == b.s.z;
+  });
+  std::vector<Vec3> s;
+  for (const CameraVertex& x : out.v) s.push_back(x.s);
+  if (has_no_area(s)) {
+    ++counts_.degenerate_polygons;
+    return std::nullopt;
+  }
+  for (const CameraVertex& x : out.v) {
+    const PlanePoint pp = girtd::project(x.s, frame_->camera.d_over_s);
+    out.screen.push_back({screen_.x(pp.xp), screen_.y(pp.yp), depth.zp(x.s.z), x.r, x.g, x.b, x.t});
+  }
+  return out;
+}
+
+Triangulated FrontEndStages::triangulate(const ScreenPolygon& p) {
+  bool planar = true;
+  const Triangulation tr = girtd::triangulate(plane_coordinates(p.v, planar));
+  if (!planar && p.v.size() > 3) ++counts_.non_planar;
+  if (tr.concave_vertices > 0) ++counts_.concave;
+  if (tr.method == TriangulationMethod::kEarClipping) ++counts_.ear_clipped;
+  if (tr.method == TriangulationMethod::kFallbackFan) ++counts_.triangulation_fallbacks;
+  Triangulated out;
+  out.method = tr.method;
+  out.corners = p.v.size();
+  for (size_t k = 0; k < tr.triangles.size(); ++k) {
+    const TriangleIndices& ti = tr.triangles[k];
+    ++counts_.triangles_made;
+    SortableTriangle st;
+    st.id = (static_cast<uint64_t>(p.source) << 32) | k;
+    st.ft.tri.source_line = frame_->polygons[p.source].source_line;
+    for (int e = 0; e < 3; ++e) {
+      st.ft.tri.v[e] = p.screen[static_cast<size_t>(ti.v[e])];
+      st.ft.made_edge[e] = ti.made_edge[e];
+      if (ti.made_edge[e]) ++counts_.made_edges;
+    }
+    out.triangles.push_back(st);
+  }
+  return out;
+}
+
+bool FrontEndStages::window_select(const SortableTriangle& t) {
+  const std::optional<TriangleSetup> setup = setup_triangle(t.ft.tri);
+  if (!setup) {
+    ++counts_.degenerate_triangles;
+    return false;
+  }
+  if (!select_start_point(*setup, window_)) {
+    ++counts_.discarded_off_window;
+    return false;
+  }
+  return true;
+}
+
+std::vector<FrontTriangle> FrontEndStages::sort(const std::vector<SortableTriangle>& frame_triangles) {
+  std::vector<SortItem> order;
+  order.reserve(frame_triangles.size());
+  for (size_t i = 0; i < frame_triangles.size(); ++i) {
+    const Triangle& t = frame_triangles[i].ft.tri;
+    const double key = std::max({t.v[0].z, t.v[1].z, t.v[2].z});
+    order.push_back({frame_triangles[i].id, key, static_cast<int>(i)});
+  }
+  sorter_.sort(order);
+  std::vector<FrontTriangle> sorted;
+  sorted.reserve(order.size());
+  for (const SortItem& s : order) sorted.push_back(frame_triangles[static_cast<size_t>(s.index)].ft);
+  counts_.triangles_out += sorted.size();
+  return sorted;
+}
+
+FrontendCounts FrontEndStages::counts() const {
+  FrontendCounts c = counts_;
+  c.depth_sort_comparisons = sorter_.comparisons();
+  c.full_sorts = sorter_.full_sorts();
+  return c;
+}
+
+}  // namespace girtd
