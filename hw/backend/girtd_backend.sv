@@ -39,6 +39,10 @@ module girtd_backend (
     input  logic        swap_i,
     output logic        idle_o,  // DDA idle, FIFO empty, HAD idle, VRAM free
     output logic        front_o,
+    // Probes: the DDA's state (models/dda state numbering) and whether this
+    // tick is a DDA clock spent on a triangle.
+    output logic [3:0]  dda_state_o,
+    output logic        dda_active_o,
     // Counters
     output logic [47:0] dda_clocks_o,     // DDA clocks spent on triangles
     output logic [47:0] dda_wait_ticks_o, // DDA clocks lost waiting on a full FIFO (in ticks)
@@ -112,7 +116,6 @@ module girtd_backend (
   end
 
   assign idle_o = in_ready_o && !out_valid && dda_state == 4'd8 && fifo_empty && had_idle && !vram_busy;
-
-  logic unused;
-  assign unused = ^{dda_state};
+  assign dda_state_o = dda_state;
+  assign dda_active_o = dda_active;
 endmodule

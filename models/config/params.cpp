@@ -107,6 +107,10 @@ Params build(const json& j, const std::string& origin) {
     p.thesis.ep_d = format_of(th.at("ep").at("d"), false);
     p.target_mpixels_per_s = j.at("targets").at("mpixels_per_s").get<double>();
     p.stage_flops_per_s = j.at("targets").at("stage_flops_per_s").get<double>();
+    p.target_preparer_triangles_per_s = j.at("targets").at("preparer_triangles_per_s").get<double>();
+    p.pipeline_fifo_depth = j.at("pipeline").at("fifo_depth").get<int>();
+    for (const auto& [stage, rate] : j.at("pipeline").at("flops_per_s").items())
+      p.stage_rate_flops_per_s[stage] = rate.get<double>();
   } catch (const json::exception& e) {
     throw InputError(origin, 0, std::string("bad configuration: ") + e.what());
   }
@@ -144,6 +148,11 @@ Params build(const json& j, const std::string& origin) {
   if (uint64_t(p.vram_serial_transfers) * uint64_t(p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)) > 16777215 ||
       p.vram_serial_transfers < 0)
     throw InputError(origin, 0, "the frame clear (vram.serial_transfers x (serial_ns + cycle_ns)) must be below 2^24 ticks");
+  if (p.pipeline_fifo_depth < 1 || p.pipeline_fifo_depth > 1000000)
+    throw InputError(origin, 0, "pipeline.fifo_depth must be 1..1000000 items");
+  for (const auto& [stage, rate] : p.stage_rate_flops_per_s)
+    if (!(rate > 0) || !std::isfinite(rate))
+      throw InputError(origin, 0, "pipeline.flops_per_s." + stage + " must be a positive rate");
   p.source = j;
   return p;
 }

@@ -3,6 +3,7 @@
 // default of its own, so a width or timing is never written twice.
 #pragma once
 
+#include <map>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -62,8 +63,14 @@ struct Params {
 
   ThesisParams thesis;
 
+  // The timed pipeline (sim/pipeline): a FIFO of this many items between
+  // every pair of stages; each front-end stage's arithmetic rate, flop/s.
+  int pipeline_fifo_depth;
+  std::map<std::string, double> stage_rate_flops_per_s;
+
   double target_mpixels_per_s;
-  double stage_flops_per_s;
+  double stage_flops_per_s;           // the thesis' budget per stage (a target, not the model)
+  double target_preparer_triangles_per_s;
 
   nlohmann::json source;  // the merged JSON, echoed into reports
 

@@ -53,7 +53,7 @@ std::vector<Point2> plane_coordinates(const std::vector<CameraVertex>& v, bool& 
 void FrontEndStages::begin_frame(const WorldFrame& frame, const Window& window) {
   frame_ = &frame;
   window_ = window;
-  normals_ = vertex_normals(frame.polygons);
+  normals_.clear();  // made by the first light() of the frame (only the lighting stage needs them)
   zmin_ = std::numeric_limits<double>::infinity();
   zmax_ = -zmin_;
   created_any_ = false;
@@ -72,6 +72,7 @@ std::optional<FrontPolygon> FrontEndStages::light(size_t i) {
     ++counts_.culled;
     return std::nullopt;
   }
+  if (normals_.empty()) normals_ = vertex_normals(frame.polygons);
   const Surface& surface = frame.surfaces.at(static_cast<size_t>(poly.surface));
   FrontPolygon out;
   out.source = i;

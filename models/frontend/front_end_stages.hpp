@@ -63,7 +63,9 @@ class FrontEndStages {
   // `depth_max`: P of the Zp map (config depth.max_mapped).
   FrontEndStages(ScreenMap screen, double depth_max) : screen_(screen), depth_max_(depth_max) {}
 
-  // Vertex normals for the frame (the thesis' database stores them).
+  // Each stage's instance is told the frame it is working on (stages run
+  // apart work on different frames at once). Vertex normals are not charged
+  // as work: the thesis' database stores them.
   void begin_frame(const WorldFrame& frame, const Window& window);
   const WorldFrame& frame() const { return *frame_; }
 

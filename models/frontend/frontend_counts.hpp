@@ -23,6 +23,27 @@ struct FrontendCounts {
   uint64_t triangles_out = 0;            // triangles handed to the preparer
   uint64_t depth_sort_comparisons = 0;
   uint64_t full_sorts = 0;               // frames sorted from scratch (no usable previous order)
+
+  // Counts of stages run apart (one per pipeline module) add up.
+  FrontendCounts& operator+=(const FrontendCounts& o) {
+    polygons += o.polygons;
+    culled += o.culled;
+    clipped += o.clipped;
+    clipped_away += o.clipped_away;
+    degenerate_polygons += o.degenerate_polygons;
+    non_planar += o.non_planar;
+    concave += o.concave;
+    ear_clipped += o.ear_clipped;
+    triangulation_fallbacks += o.triangulation_fallbacks;
+    triangles_made += o.triangles_made;
+    made_edges += o.made_edges;
+    degenerate_triangles += o.degenerate_triangles;
+    discarded_off_window += o.discarded_off_window;
+    triangles_out += o.triangles_out;
+    depth_sort_comparisons += o.depth_sort_comparisons;
+    full_sorts += o.full_sorts;
+    return *this;
+  }
 };
 
 }  // namespace girtd

@@ -44,11 +44,13 @@ void BackendTimingModel::push(const TimedPixel& p, uint64_t tick) {
   } else {
     ++t_.page_misses;
     const uint64_t loaded = pop + (cache_valid_ ? 2 * vram_ : vram_);
+    t_.had_vram_wait_ticks += loaded - pop;
     done = loaded + 1 + std::max(access_, 1);
     cache_valid_ = true;
     cache_page_ = page;
   }
   if (p.outcome == HadOutcome::kBlended) done += blend_;
+  t_.had_busy_ticks += done - pop;
   had_free_ = done;
   ++t_.pixels;
   // Keep only what can still be in the FIFO.

@@ -10,6 +10,7 @@
 // testbench/unit/test_backend_timing.cpp.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <vector>
@@ -30,6 +31,8 @@ struct BackendTiming {
   uint64_t dda_clocks = 0;       // DDA clocks on triangles (loads excluded)
   uint64_t dda_wait_clocks = 0;  // DDA clocks lost on a full FIFO
   uint64_t page_misses = 0;
+  uint64_t had_busy_ticks = 0;       // a pixel in hand (pop to done)
+  uint64_t had_vram_wait_ticks = 0;  // of those, waiting for a page (write-back and fetch)
   uint64_t pixels = 0;
   int fifo_max = 0;
 };
@@ -44,6 +47,11 @@ class BackendTimingModel {
   void end_frame();    // drain, write the cache page back, swap
 
   const BackendTiming& timing() const { return t_; }
+  // The tick the DDA can take its next parameter set (its first enabled
+  // tick once the previous triangle is done), and a parameter set that
+  // arrives later than that: the DDA idles until `tick`.
+  uint64_t dda_ready_tick() const { return next_en(dda_at_); }
+  void idle_until(uint64_t tick) { dda_at_ = std::max(dda_at_, tick); }
 
  private:
   uint64_t next_en(uint64_t tick) const;  // first DDA-enabled tick at or after `tick`

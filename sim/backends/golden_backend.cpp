@@ -70,9 +70,9 @@ void GoldenBackend::draw_frame(const TraceFrame& frame, Had& had, RunStats& stat
 
 void GoldenBackend::finish(RunStats& stats) const {
   stats.preparer = preparer_.counts();
-  stats.stages.push_back({"preparer", preparer_.counts().prepared, std::nullopt, std::nullopt});
-  stats.stages.push_back({"dda", stats.triangles_drawn, std::nullopt, std::nullopt});
-  stats.stages.push_back({"had", stats.pixels_generated, std::nullopt, std::nullopt});
+  stats.stages.push_back(untimed_stage("preparer", preparer_.counts().prepared));
+  stats.stages.push_back(untimed_stage("dda", stats.triangles_drawn));
+  stats.stages.push_back(untimed_stage("had", stats.pixels_generated));
 }
 
 }  // namespace girtd

@@ -28,8 +28,8 @@ void ReferenceBackend::draw_frame(const TraceFrame& frame, Had& had, RunStats& s
 }
 
 void ReferenceBackend::finish(RunStats& stats) const {
-  stats.stages.push_back({"reference_raster", stats.triangles_drawn, std::nullopt, std::nullopt});
-  stats.stages.push_back({"had", stats.pixels_generated, std::nullopt, std::nullopt});
+  stats.stages.push_back(untimed_stage("reference_raster", stats.triangles_drawn));
+  stats.stages.push_back(untimed_stage("had", stats.pixels_generated));
 }
 
 }  // namespace girtd

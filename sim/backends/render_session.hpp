@@ -7,16 +7,12 @@
 #include <vector>
 
 #include "backends/backend.hpp"
+#include "backends/dump_tap.hpp"
 #include "had/frame_buffer.hpp"
 #include "io/png_io.hpp"
 #include "io/trace.hpp"
 
 namespace girtd {
-
-struct DumpRequest {
-  TraceLevel level;
-  std::string path;
-};
 
 struct RenderOutput {
   RunStats stats;

@@ -19,6 +19,32 @@ struct StageStats {
   std::string name;
   uint64_t items = 0;
   std::optional<double> busy_s, stall_s;
+  // Timed back ends: stall_s = starved_s + blocked_s.
+  std::optional<double> starved_s;    // waiting for input
+  std::optional<double> blocked_s;    // waiting for room downstream
+  std::optional<double> flops;        // arithmetic done (front-end stages, preparer)
+  std::optional<uint64_t> fifo_in_max;  // most items ever in the FIFO in front of it
+};
+
+// A stage of an untimed back end: items only.
+inline StageStats untimed_stage(const std::string& name, uint64_t items) {
+  StageStats s;
+  s.name = name;
+  s.items = items;
+  return s;
+}
+
+// Whole-pipeline timing (the approx and rtl back ends).
+struct PipelineTiming {
+  double modeled_s = 0;
+  std::string bottleneck;           // the stage with the most busy time
+  uint64_t cache_accesses = 0, page_misses = 0;
+  double dda_busy_s = 0;            // DDA clocks on triangles
+  double dda_fifo_full_s = 0;       // DDA waiting on a full DDA -> HAD FIFO
+  double dda_starved_s = 0;         // DDA idle, no parameter set (the front end starving it)
+  double had_page_wait_s = 0;       // HAD waiting on page write-backs and fetches
+  uint64_t preparer_triangles = 0;  // parameter sets the preparer delivered
+  double preparer_capacity_triangles_per_s = 0;  // its rate over its flops per triangle
 };
 
 struct RunStats {
@@ -31,6 +57,7 @@ struct RunStats {
   std::optional<DdaRunStats> dda;  // summed over all triangles
   std::optional<FrontendCounts> frontend;  // when the input entered above the front end
   std::vector<StageStats> stages;
+  std::optional<PipelineTiming> timing;
   double wall_s = 0;
 };
 

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 
 #include "cli/commands.hpp"
@@ -9,6 +10,7 @@
 
 int main(int argc, char** argv) {
   using namespace girtd;
+  setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);  // before SystemC starts
   CLI::App app{"GIRTD-sim: cycle-approximate simulator of the GIRTD 3D image generator (1988)"};
   app.require_subcommand(1);
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "backends/render_session.hpp"
+#include "pipeline/pipeline.hpp"
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
 #include "cli/output_set.hpp"
@@ -33,7 +34,7 @@ DumpRequest parse_dump(const std::string& spec) {
 
 void reject_unbuilt_options(const RenderArgs& a) {
   if (!a.wave.empty() || !a.wave_window.empty() || !a.wave_scopes.empty())
-    throw InputError("--wave", 0, "waveforms come with the rtl back end, which is not built yet");
+    throw InputError("--wave", 0, "waveforms are not built yet");
   if (a.frames != "last" && a.frames != "all")
     throw InputError("--frames", 0, "expected 'last' or 'all', got '" + a.frames + "'");
 }
@@ -85,7 +86,9 @@ LoadedInput load_input(const RenderArgs& a, const Params& params) {
 int run_render(const RenderArgs& a) {
   reject_unbuilt_options(a);
   const Params params = load_params(a.config);
-  auto backend = make_backend(a.backend, params);
+  const bool pipelined = is_pipeline_backend(a.backend);
+  std::unique_ptr<Backend> backend;
+  if (!pipelined) backend = make_backend(a.backend, params);
   if (a.aa && !is_hardware_q(*a.aa) && a.backend != "reference")
     throw InputError("--aa", 0, "Q must be 0 or a power of two 1/16..8 for the hardware back ends");
   const LoadedInput input = load_input(a, params);
@@ -96,14 +99,21 @@ int run_render(const RenderArgs& a) {
   if (!a.dump.empty()) opt.dump = parse_dump(a.dump);
   opt.progress = isatty(STDERR_FILENO);
   if (input.polygons) opt.polygon_source = &*input.polygons;
-  RenderOutput out = render_trace(trace, *backend, params, opt);
-  out.stats.frontend = input.frontend;
+  RenderOutput out;
+  if (pipelined) {
+    const Trace* polygons = input.polygons ? &*input.polygons : nullptr;
+    check_pipeline_input(polygons ? *polygons : trace, params);
+    out = run_pipeline(a.backend, trace, polygons, params, opt);
+  } else {
+    out = render_trace(trace, *backend, params, opt);
+    out.stats.frontend = input.frontend;
+  }
 
   ReportContext ctx;
-  ctx.backend = backend->name();
+  ctx.backend = pipelined ? a.backend : backend->name();
   ctx.input = a.input;
   ctx.level = level_name(input.polygons ? TraceLevel::kPolygon : trace.level);
-  ctx.not_modeled = backend->not_modeled();
+  ctx.not_modeled = pipelined ? std::vector<std::string>{} : backend->not_modeled();
   ctx.image_sha256 = sha256_hex(out.shown.rgb);
   const nlohmann::json report = make_report(ctx, out.stats, params);
 

@@ -15,8 +15,39 @@ json opt(const std::optional<T>& v) {
   return v ? json(*v) : json(nullptr);
 }
 
-json stage_json(const StageStats& st) {
-  return json{{"items", st.items}, {"busy_s", opt(st.busy_s)}, {"stall_s", opt(st.stall_s)}};
+json stage_json(const StageStats& st, const std::optional<PipelineTiming>& t) {
+  json j{{"items", st.items}, {"busy_s", opt(st.busy_s)}, {"stall_s", opt(st.stall_s)}};
+  if (!t) return j;
+  j["starved_s"] = opt(st.starved_s);
+  j["blocked_s"] = opt(st.blocked_s);
+  j["flops"] = opt(st.flops);
+  j["fifo_in_max"] = opt(st.fifo_in_max);
+  j["utilization"] = st.busy_s && t->modeled_s > 0 ? json(*st.busy_s / t->modeled_s) : json(nullptr);
+  return j;
+}
+
+double per_s(double count, double seconds) { return seconds > 0 ? count / seconds : 0.0; }
+
+// The timed back ends' throughput keys (sim/README.md).
+void add_timing(json& r, const RunStats& s, const Params& params) {
+  const PipelineTiming& t = *s.timing;
+  r["modeled_time_s"] = t.modeled_s;
+  r["modeled_mpixels_per_s"] = per_s(double(s.pixels_generated), t.modeled_s) / 1e6;
+  r["target_met"] = r["modeled_mpixels_per_s"].get<double>() >= params.target_mpixels_per_s;
+  r["back_end_mpixels_per_s"] = per_s(double(s.pixels_generated), t.modeled_s - t.dda_starved_s) / 1e6;
+  r["bottleneck"] = t.bottleneck;
+  r["cache"] = json{{"accesses", t.cache_accesses},
+                    {"page_misses", t.page_misses},
+                    {"nac", t.page_misses ? double(t.cache_accesses) / double(t.page_misses) : 0.0}};
+  r["time_split"] = json{{"dda_busy_s", t.dda_busy_s},
+                         {"dda_fifo_full_s", t.dda_fifo_full_s},
+                         {"dda_starved_s", t.dda_starved_s},
+                         {"had_page_wait_s", t.had_page_wait_s}};
+  if (s.preparer) {
+    r["preparer_triangles_per_s"] = per_s(double(t.preparer_triangles), t.modeled_s);
+    r["preparer_capacity_triangles_per_s"] = t.preparer_capacity_triangles_per_s;
+    r["target_preparer_triangles_per_s"] = params.target_preparer_triangles_per_s;
+  }
 }
 
 }  // namespace
@@ -54,8 +85,9 @@ json make_report(const ReportContext& ctx, const RunStats& s, const Params& para
   r["modeled_mpixels_per_s"] = nullptr;
   r["bottleneck"] = nullptr;
   r["cache"] = json{{"accesses", nullptr}, {"page_misses", nullptr}, {"nac", nullptr}};
+  if (s.timing) add_timing(r, s, params);
   json stages = json::object();
-  for (const StageStats& st : s.stages) stages[st.name] = stage_json(st);
+  for (const StageStats& st : s.stages) stages[st.name] = stage_json(st, s.timing);
   r["stages"] = stages;
   if (s.preparer) {
     r["preparer"] = json{{"prepared", s.preparer->prepared},
@@ -92,6 +124,49 @@ json make_report(const ReportContext& ctx, const RunStats& s, const Params& para
   return r;
 }
 
+namespace {
+
+std::string num(const json& v, int precision = 4) {
+  if (v.is_null()) return "not modeled";
+  if (!v.is_number_float()) return v.dump();
+  std::ostringstream f;
+  f.precision(precision);
+  f << v.get<double>();
+  return f.str();
+}
+
+std::string throughput_markdown(const json& r) {
+  std::ostringstream o;
+  const double rate = r.at("modeled_mpixels_per_s"), target = r.at("target_mpixels_per_s");
+  const double t = r.at("modeled_time_s");
+  o << "\n## Throughput\n\n";
+  o << (r.at("target_met").get<bool>() ? "PASS" : "FAIL") << ": modeled " << num(rate) << " Mpixel/s against the "
+    << num(target) << " Mpixel/s target (" << num(r.at("back_end_mpixels_per_s")) << " Mpixel/s with the DDA fed; "
+    << "bottleneck: " << r.at("bottleneck").get<std::string>() << ")\n\n";
+  o << "| where the time went | s | share of " << num(t) << " s |\n|---|---|---|\n";
+  for (auto it = r.at("time_split").begin(); it != r.at("time_split").end(); ++it)
+    o << "| " << it.key() << " | " << num(*it) << " | " << num(it->get<double>() / t * 100, 3) << " % |\n";
+  if (r.contains("preparer_triangles_per_s"))
+    o << "\nPreparer: delivered " << num(r.at("preparer_triangles_per_s")) << " triangles/s (can do "
+      << num(r.at("preparer_capacity_triangles_per_s")) << "; the thesis asks for "
+      << num(r.at("target_preparer_triangles_per_s")) << ")\n";
+  return o.str();
+}
+
+std::string stages_markdown(const json& stages) {
+  std::ostringstream o;
+  o << "| stage | items | busy_s | stall_s | starved_s | blocked_s | utilization | FIFO max in |\n"
+    << "|---|---|---|---|---|---|---|---|\n";
+  auto cell = [](const json& st, const char* k) { return st.contains(k) ? num(st.at(k)) : std::string("not modeled"); };
+  for (auto it = stages.begin(); it != stages.end(); ++it)
+    o << "| " << it.key() << " | " << it->at("items") << " | " << cell(*it, "busy_s") << " | " << cell(*it, "stall_s")
+      << " | " << cell(*it, "starved_s") << " | " << cell(*it, "blocked_s") << " | " << cell(*it, "utilization")
+      << " | " << cell(*it, "fifo_in_max") << " |\n";
+  return o.str();
+}
+
+}  // namespace
+
 std::string report_markdown(const json& r) {
   std::ostringstream o;
   auto val = [&](const char* key) -> std::string {
@@ -119,17 +194,13 @@ std::string report_markdown(const json& r) {
                        r.at("pixels_z_rejected").get<uint64_t>() + r.at("pixels_dropped").get<uint64_t>();
   o << "\nPixel accounting: generated " << gen << " = written + blended + z_rejected + dropped = " << sum
     << (gen == sum ? " (holds)" : " (BROKEN)") << "\n";
+  if (r.contains("time_split")) o << throughput_markdown(r);
   if (r.contains("frontend") && r.at("frontend").is_object()) {
     o << "\nFront end (counts over all frames):\n\n| count | value |\n|---|---|\n";
     for (auto it = r.at("frontend").begin(); it != r.at("frontend").end(); ++it)
       o << "| `" << it.key() << "` | " << it->dump() << " |\n";
   }
-  o << "\nStages:\n\n| stage | items | busy_s | stall_s |\n|---|---|---|---|\n";
-  for (auto it = r.at("stages").begin(); it != r.at("stages").end(); ++it) {
-    auto show = [](const json& v) { return v.is_null() ? std::string("not modeled") : v.dump(); };
-    o << "| " << it.key() << " | " << it->at("items") << " | " << show(it->at("busy_s")) << " | "
-      << show(it->at("stall_s")) << " |\n";
-  }
+  o << "\nStages:\n\n" << stages_markdown(r.at("stages"));
   o << "\nNot modeled by this back end: ";
   for (const auto& k : r.at("not_modeled")) o << "`" << k.get<std::string>() << "` ";
   o << "\n";

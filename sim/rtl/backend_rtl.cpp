@@ -17,6 +17,7 @@ struct BackendRtl::Impl {
   VerilatedContext ctx;
   std::unique_ptr<Vgirtd_backend> top;
   uint64_t ticks = 0;
+  std::array<uint64_t, 8> state_clocks{};
   Impl(const Params& p, uint32_t x_seed) : params(p) {
     if (x_seed != 0) {
       ctx.randReset(2);
@@ -53,6 +54,7 @@ BackendRtl::BackendRtl(const Params& p, uint32_t x_seed) : impl_(std::make_uniqu
   for (int i = 0; i < 4; ++i) tick();
   t.rst_ni = 1;
   impl_->ticks = 0;
+  impl_->state_clocks.fill(0);
 }
 
 BackendRtl::~BackendRtl() { impl_->top->final(); }
@@ -61,6 +63,7 @@ void BackendRtl::tick() {
   Vgirtd_backend& t = *impl_->top;
   t.clk_i = 0;
   t.eval();
+  if (t.dda_active_o) ++impl_->state_clocks[t.dda_state_o & 7];
   t.clk_i = 1;
   t.eval();
   ++impl_->ticks;
@@ -76,6 +79,25 @@ void BackendRtl::drain() {
     tick();
   }
 }
+
+void BackendRtl::step_until_ready() {
+  Vgirtd_backend& t = *impl_->top;
+  t.in_valid_i = 0;
+  for (uint64_t guard = 0;; ++guard) {
+    t.clk_i = 0;
+    t.eval();
+    if (t.in_ready_o) return;
+    if (guard > (uint64_t{1} << 28)) throw std::logic_error("RTL DDA did not become ready within 2^28 ticks");
+    tick();
+  }
+}
+
+void BackendRtl::step_to(uint64_t target) {
+  impl_->top->in_valid_i = 0;
+  while (impl_->ticks < target) tick();
+}
+
+uint64_t BackendRtl::ticks() const { return impl_->ticks; }
 
 void BackendRtl::begin_frame(Rgb bg) {
   Vgirtd_backend& t = *impl_->top;
@@ -130,6 +152,7 @@ BackendCounters BackendRtl::counters() const {
   c.had_busy_ticks = t.had_busy_ticks_o;
   c.had_vram_wait_ticks = t.had_vram_wait_ticks_o;
   c.fifo_max = t.fifo_max_o;
+  c.dda_state_clocks = impl_->state_clocks;
   return c;
 }
 

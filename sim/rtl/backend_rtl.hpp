@@ -4,6 +4,7 @@
 // buffers swapped; the shown buffer and Z are read through a backdoor.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -23,6 +24,7 @@ struct BackendCounters {
   uint64_t page_misses = 0;
   uint64_t had_busy_ticks = 0, had_vram_wait_ticks = 0;
   int fifo_max = 0;
+  std::array<uint64_t, 8> dda_state_clocks{};  // DDA clocks per state (models/dda numbering)
   uint64_t accounted() const { return written + blended + z_rejected + dropped; }
 };
 
@@ -38,6 +40,12 @@ class BackendRtl {
   void draw(const DdaParams& d);     // hand one parameter set to the DDA
   void end_frame();                  // drain, write the cache page back, swap
   void drain();                      // clock until DDA, FIFO, HAD and VRAM are idle
+  // For a simulation that hands over parameter sets as they arrive
+  // (sim/pipeline): clock until the DDA could take one on this tick, and
+  // clock with no input up to a given tick.
+  void step_until_ready();
+  void step_to(uint64_t tick);
+  uint64_t ticks() const;
 
   BackendCounters counters() const;
   // The shown buffer (1024 x 1024 x 3 bytes) and Z, through the backdoor.

@@ -1,0 +1,82 @@
+#include "timing/stage_costs.hpp"
+
+namespace girtd {
+
+double OpCount::flops() const {
+  return double(add) + double(mul) + kDivFlops * double(div) + kSqrtFlops * double(sqrt);
+}
+
+namespace {
+
+// Newell normal: per corner 3 x (2 add + 1 mul).
+OpCount newell(size_t n) { return OpCount{6, 3, 0, 0} * n; }
+// |v| of a 3-vector: 3 mul, 2 add, 1 sqrt; normalizing adds 1 div and 3 mul.
+constexpr OpCount kLength{2, 3, 0, 1};
+constexpr OpCount kNormalize{2, 6, 1, 1};
+constexpr OpCount kDot{2, 3, 0, 0};
+
+// polygon_shape's no-area test: Newell normal, its length, the perimeter
+// (a length per edge) and one compare.
+OpCount area_test(size_t n) { return newell(n) + kLength + (kLength + OpCount{4, 0, 0, 0}) * n + OpCount{1, 2, 0, 0}; }
+
+}  // namespace
+
+OpCount lighting_ops(size_t n, size_t lights, bool culling) {
+  OpCount ops = area_test(n);
+  // Back face: centroid (3 add per corner, 3 mul by 1/n), one dot, one compare.
+  if (culling) ops = ops + OpCount{3 * n + 3 + 1, 3, 1, 0} + kDot;
+  // Per corner: E = unit(eye - P) (3 sub + normalize); ambient R Id (3 mul);
+  // transparency Tf = Tmin + (Tmax - Tmin)|N.E|, T = 1 - Tf (dot, abs, 3 add,
+  // 1 mul); saturation of R, G, B and T (8 compares).
+  const OpCount corner = OpCount{3, 0, 0, 0} + kNormalize + OpCount{0, 3, 0, 0} + kDot + OpCount{4, 1, 0, 0} +
+                         OpCount{8, 0, 0, 0};
+  // Per corner and light: N.I and its sign; diffuse R If (N.I) per colour
+  // (2 mul, 1 add); reflection 2(N.I)N - I (4 mul, 3 sub) and its dot with E,
+  // clamp; the power by exp(n ln x) (two series, as a square root each, plus
+  // 1 mul); the angle acos(N.I) (as a square root); CRE interpolation (1 div,
+  // 2 add, 1 mul); 255 CRE pow If (3 mul) added to each colour (3 add).
+  const OpCount per_light = kDot + OpCount{1, 0, 0, 0} + OpCount{3, 6, 0, 0} + OpCount{3, 4, 0, 0} + kDot +
+                            OpCount{1, 0, 0, 0} + OpCount{0, 1, 0, 2} + OpCount{0, 0, 0, 1} + OpCount{2, 1, 1, 0} +
+                            OpCount{3, 3, 0, 0};
+  return ops + (corner + per_light * lights) * n;
+}
+
+// [Xs Ys Zs] = (P - C) T: 3 sub, 9 mul, 6 add per corner.
+OpCount view_ops(size_t n) { return OpCount{9, 9, 0, 0} * n; }
+
+// One compare per corner; per crossing the weights (3 sub, 1 div) and
+// 7 attributes (X, Y, Z, R, G, B, T) at 2 mul + 1 add each.
+OpCount depth_clip_ops(size_t n, size_t made) {
+  return OpCount{n, 0, 0, 0} + (OpCount{3, 0, 1, 0} + OpCount{7, 14, 0, 0}) * made;
+}
+
+// Per corner: Zmin/Zmax (2 compares), repeated-corner test (3 compares),
+// 1/Zs (1 div), Xp and Yp (4 mul), the pixel map (2 add, 2 mul), Zp (1 add,
+// 2 mul); plus the area test the clip's slivers need.
+OpCount projection_ops(size_t n) { return OpCount{7, 8, 1, 0} * n + area_test(n); }
+
+// The polygon's own plane (Newell normal, normalize, two axes: 2 cross
+// products, 1 normalize; per corner 2 dots and 3 sub, 1 compare for the
+// planarity); the turn of every corner (2 mul, 3 sub, 1 compare). Ear
+// clipping tests every remaining corner against each candidate ear
+// (2 x 3 mul + 5 add per test), about n^2 tests per polygon.
+OpCount triangulator_ops(size_t n, TriangulationMethod method) {
+  OpCount ops = newell(n) + kNormalize * 2 + OpCount{6, 12, 0, 0} + (kDot * 2 + OpCount{4, 0, 0, 0}) * n +
+                OpCount{4, 2, 0, 0} * n;
+  if (method == TriangulationMethod::kEarClipping || method == TriangulationMethod::kFallbackFan)
+    ops = ops + OpCount{5, 6, 0, 0} * (n * n);
+  return ops;
+}
+
+// The thesis' figure for the edge distances, 57 flop per triangle, kept as
+// stated (as additions: the thesis gives the total, not its mix).
+OpCount window_clip_ops() { return OpCount{57, 0, 0, 0}; }
+
+// The key (the farthest corner: 2 compares) and one compare per comparison.
+OpCount depth_sort_ops(size_t triangles, uint64_t comparisons) { return OpCount{2 * triangles + comparisons, 0, 0, 0}; }
+
+// 3 sqrt, 4 div, 51 mul and 81 add make 172 flop; less the clip stage's 57,
+// the preparer's 115 (as additions, like the clip's share).
+OpCount preparer_ops() { return OpCount{115, 0, 0, 0}; }
+
+}  // namespace girtd

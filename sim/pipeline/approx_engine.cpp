@@ -1,0 +1,70 @@
+// The approx back end: the golden DDA and HAD decide every pixel; the event
+// model of models/timing decides when (its error against the RTL is measured
+// by `girtd bench`, not assumed).
+#include <vector>
+
+#include "backends/golden_backend.hpp"
+#include "backends/render_session.hpp"
+#include "pipeline/back_end_engine.hpp"
+#include "timing/backend_timing.hpp"
+
+namespace girtd {
+namespace {
+
+class ApproxEngine : public BackEndEngine {
+ public:
+  explicit ApproxEngine(const Params& p)
+      : period_ticks_(static_cast<uint64_t>(p.ticks(p.dda_clock_ns))), dda_(p), fb_(p.screen_width, p.screen_height, static_cast<uint16_t>(p.depth_clear)), had_(fb_, p.one_minus_nf),
+        timing_(p) {}
+  uint64_t ready_tick() override { return timing_.dda_ready_tick(); }
+  void idle_until(uint64_t tick) override { timing_.idle_until(tick); }
+  void begin_frame(const FrameSettings& s) override {
+    fb_.clear_back(s.background);
+    had_.set_drop_partial(s.qq);
+    timing_.begin_frame();
+  }
+  void draw(const DdaParams& d) override {
+    pixels_.clear();
+    const DdaRunStats st = dda_.run(d, [&](const DdaEmit& e) {
+      pixels_.push_back({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel)});
+    });
+    timing_.triangle(st.cycles, pixels_);
+    accumulate(r_.dda, st);
+    ++r_.triangles_drawn;
+    r_.pixels_generated += pixels_.size();
+  }
+  void end_frame() override {
+    timing_.end_frame();
+    fb_.swap();
+  }
+  uint64_t now_tick() const override { return timing_.timing().ticks; }
+  BackEndResult result() const override {
+    BackEndResult r = r_;
+    const BackendTiming& t = timing_.timing();
+    r.ticks = t.ticks;
+    r.had = had_.counts();
+    r.dda_wait_ticks = t.dda_wait_clocks * period_ticks_;
+    r.page_misses = t.page_misses;
+    r.had_busy_ticks = t.had_busy_ticks;
+    r.had_vram_wait_ticks = t.had_vram_wait_ticks;
+    r.fifo_max = static_cast<uint64_t>(t.fifo_max);
+    return r;
+  }
+  RgbImage shown() const override { return shown_image(fb_); }
+  std::vector<uint16_t> z_plane() const override { return fb_.z_plane(); }
+
+ private:
+  uint64_t period_ticks_;
+  DdaEngine dda_;
+  FrameBuffer fb_;
+  Had had_;
+  BackendTimingModel timing_;
+  std::vector<TimedPixel> pixels_;
+  BackEndResult r_;
+};
+
+}  // namespace
+
+std::unique_ptr<BackEndEngine> make_approx_engine(const Params& p) { return std::make_unique<ApproxEngine>(p); }
+
+}  // namespace girtd

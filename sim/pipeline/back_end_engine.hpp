@@ -1,0 +1,56 @@
+// What the pipeline's back-end stage drives: the DDA, FIFO, HAD, cache and
+// VRAM, in base ticks. Two engines: `approx` (golden DDA and HAD for what
+// is drawn, models/timing's event model for when) and `rtl` (the Verilated
+// girtd_backend, clocked tick by tick). The SystemC stage around them
+// (back_end_stage.hpp) hands over parameter sets as they arrive.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/types.hpp"
+#include "config/params.hpp"
+#include "dda/dda_engine.hpp"
+#include "dda/dda_params.hpp"
+#include "had/had.hpp"
+#include "io/png_io.hpp"
+
+namespace girtd {
+
+struct BackEndResult {
+  uint64_t ticks = 0;             // base ticks from the first frame's clear to the last swap
+  uint64_t triangles_drawn = 0;
+  uint64_t pixels_generated = 0;
+  HadCounts had;
+  DdaRunStats dda;                // cycles, emitted, clocks per state
+  uint64_t dda_wait_ticks = 0;    // DDA waiting on a full DDA -> HAD FIFO
+  uint64_t page_misses = 0;
+  uint64_t had_busy_ticks = 0;
+  uint64_t had_vram_wait_ticks = 0;  // HAD waiting for a page (write-back and fetch)
+  uint64_t fifo_max = 0;          // DDA -> HAD FIFO
+};
+
+class BackEndEngine {
+ public:
+  virtual ~BackEndEngine() = default;
+  // The tick the DDA can take the next parameter set (the rtl engine clocks
+  // the RTL up to it).
+  virtual uint64_t ready_tick() = 0;
+  // Nothing arrived before `tick`: the back end runs on without input.
+  virtual void idle_until(uint64_t tick) = 0;
+  virtual void begin_frame(const FrameSettings& s) = 0;  // clear
+  virtual void draw(const DdaParams& d) = 0;
+  virtual void end_frame() = 0;  // drain, write the cache back, swap
+  virtual uint64_t now_tick() const = 0;
+  virtual BackEndResult result() const = 0;
+  virtual RgbImage shown() const = 0;
+  virtual std::vector<uint16_t> z_plane() const = 0;
+};
+
+// "approx" or "rtl".
+std::unique_ptr<BackEndEngine> make_back_end_engine(const std::string& backend, const Params& p);
+
+}  // namespace girtd

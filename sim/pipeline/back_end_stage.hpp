@@ -1,0 +1,53 @@
+// The back end as the pipeline's last SystemC module. Its engine keeps its
+// own clock in base ticks and may run ahead of SystemC time; the two are
+// brought level whenever a token changes hands, so the preparer sees the
+// FIFO slot freed at the tick the DDA takes the parameter set, and a DDA
+// waiting for input waits in SystemC time.
+#pragma once
+
+#include <systemc>
+
+#include <chrono>
+#include <functional>
+#include <vector>
+
+#include "dda/dda_params.hpp"
+#include "pipeline/back_end_engine.hpp"
+#include "pipeline/stage_activity.hpp"
+#include "pipeline/token.hpp"
+
+namespace girtd {
+
+class BackEndStage : public sc_core::sc_module {
+ public:
+  sc_core::sc_fifo_in<Token<DdaParams>> in;
+
+  // Called after each frame's swap (for --frames all) and, when the run is
+  // long, with progress (frame index, triangles so far).
+  using FrameDone = std::function<void(size_t frame)>;
+  using Progress = std::function<void(size_t frame, uint64_t triangles, double modeled_s)>;
+
+  SC_HAS_PROCESS(BackEndStage);
+  BackEndStage(const sc_core::sc_module_name& name, BackEndEngine& engine, const std::vector<FrameSettings>& frames,
+               double tick_ns, StageActivity& activity, FifoActivity& in_fifo, FrameDone frame_done,
+               Progress progress);
+
+  bool finished() const { return finished_; }
+
+ private:
+  void run();
+  sc_core::sc_time at(uint64_t tick) const;
+  uint64_t tick_of(const sc_core::sc_time& t) const;  // the first tick at or after t
+  void sync_to(uint64_t tick);
+
+  BackEndEngine& engine_;
+  const std::vector<FrameSettings>& frames_;
+  double tick_ns_;
+  StageActivity& a_;
+  FifoActivity& in_fifo_;
+  FrameDone frame_done_;
+  Progress progress_;
+  bool finished_ = false;
+};
+
+}  // namespace girtd

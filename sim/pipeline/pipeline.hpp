@@ -1,0 +1,28 @@
+// GIRTD's pipeline (GIRTD.md §2) as a SystemC simulation: one module per
+// stage, a FIFO of pipeline.fifo_depth items between each pair, the back end
+// (approx or rtl) last. What enters depends on the input's level: polygons
+// start at lighting, triangles at the window clip, DDA parameter sets at the
+// back end. One simulation per process (SystemC elaborates once).
+#pragma once
+
+#include <string>
+
+#include "backends/render_session.hpp"
+#include "config/params.hpp"
+#include "io/trace.hpp"
+
+namespace girtd {
+
+bool is_pipeline_backend(const std::string& name);  // "approx", "rtl"
+
+// Refuses input the pipeline cannot take (InputError): thesis-level traces,
+// a Q the hardware cannot do.
+void check_pipeline_input(const Trace& trace, const Params& p);
+
+// `trace`: the triangle- or DDA-level trace; `polygons`: the polygon-level
+// trace it was made from, when there is one (the pipeline then runs the
+// front end itself; `trace` is only used for --dump).
+RenderOutput run_pipeline(const std::string& backend, const Trace& trace, const Trace* polygons, const Params& p,
+                          const RenderOptions& opt);
+
+}  // namespace girtd
