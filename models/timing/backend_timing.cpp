@@ -23,11 +23,25 @@ uint64_t BackendTimingModel::next_en(uint64_t tick) const {
   return (tick + period_ - 1) / period_ * period_;
 }
 
+// Push and pop ticks both rise, so each count is a binary search.
 uint64_t BackendTimingModel::fifo_count_at(uint64_t tick) const {
-  uint64_t pushed = 0, popped = 0;
-  for (uint64_t u : pushes_) pushed += u < tick;
-  for (uint64_t s : pops_) popped += s < tick;
-  return pushed - popped;
+  const auto pushed = std::lower_bound(pushes_.begin(), pushes_.end(), tick) - pushes_.begin();
+  const auto popped = std::lower_bound(pops_.begin(), pops_.end(), tick) - pops_.begin();
+  return static_cast<uint64_t>(pushed - popped);
+}
+
+// The DDA holds a pixel while the FIFO is full at its tick `at`: it tries
+// again every DDA clock. Jumps straight to the first clock after enough
+// pops (no push happens meanwhile), counting the clocks lost.
+uint64_t BackendTimingModel::wait_for_room(uint64_t at) {
+  for (uint64_t count = fifo_count_at(at); count >= uint64_t(limit_); count = fifo_count_at(at)) {
+    const auto popped = std::lower_bound(pops_.begin(), pops_.end(), at) - pops_.begin();
+    const uint64_t frees_after = pops_[static_cast<size_t>(popped) + (count - limit_)];  // that pop makes room
+    const uint64_t clocks = (frees_after + 1 - at + period_ - 1) / period_;
+    at += clocks * period_;
+    t_.dda_wait_clocks += clocks;
+  }
+  return at;
 }
 
 // The HAD side of one pixel pushed at `tick` (hw/had: the pop tick is an
@@ -60,37 +74,37 @@ void BackendTimingModel::push(const TimedPixel& p, uint64_t tick) {
   }
 }
 
-void BackendTimingModel::triangle(uint64_t dda_cycles, const std::vector<TimedPixel>& pixels) {
-  // The load takes one enabled tick; clock c of the triangle comes P ticks
-  // later per clock; an emitted pixel is pushed one DDA clock after it is
-  // emitted, and the DDA waits while the FIFO is full at that tick.
-  uint64_t at = next_en(dda_at_) + period_;  // clock 0 (CHECK)
-  size_t next = 0;
-  for (uint64_t c = 0; c <= dda_cycles; ++c) {
-    while (next < pixels.size() && pixels[next].cycle == c) {
-      // Emitted on clock c - latency: pushed on this clock's tick if there is room.
-      while (fifo_count_at(at) >= uint64_t(limit_)) {
-        at += period_;
-        ++t_.dda_wait_clocks;
-      }
-      push(pixels[next], at);
-      t_.fifo_max = std::max<int>(t_.fifo_max, int(fifo_count_at(at + 1)));
-      ++next;
-    }
-    if (c < dda_cycles) at += period_;
-  }
-  // Pixels leaving after the triangle's last clock (an output latency beyond it).
-  for (; next < pixels.size(); ++next) {
-    while (fifo_count_at(at) >= uint64_t(limit_)) {
-      at += period_;
-      ++t_.dda_wait_clocks;
-    }
-    push(pixels[next], at);
-    at += period_;
-  }
+// The load takes one enabled tick; clock c of the triangle comes P ticks
+// later per clock; an emitted pixel is pushed on the clock it leaves the
+// DDA (its `cycle`), and the DDA waits while the FIFO is full at that tick.
+void BackendTimingModel::begin_triangle() {
+  tri_clock0_ = next_en(dda_at_) + period_;  // clock 0 (CHECK)
+  tri_wait_ticks_ = 0;
+  tri_last_push_.reset();
+}
+
+void BackendTimingModel::pixel(const TimedPixel& p) {
+  const uint64_t due = tri_clock0_ + p.cycle * uint64_t(period_) + tri_wait_ticks_;
+  const uint64_t at = wait_for_room(due);
+  tri_wait_ticks_ += at - due;
+  push(p, at);
+  t_.fifo_max = std::max<int>(t_.fifo_max, int(fifo_count_at(at + 1)));
+  tri_last_push_ = at;
+}
+
+void BackendTimingModel::end_triangle(uint64_t dda_cycles) {
+  uint64_t at = tri_clock0_ + dda_cycles * uint64_t(period_) + tri_wait_ticks_;
+  // A pixel leaving after the triangle's last clock (an output latency beyond it).
+  if (tri_last_push_ && *tri_last_push_ >= at) at = *tri_last_push_ + period_;
   t_.dda_clocks += dda_cycles;
   dda_at_ = at;
   t_.ticks = std::max(t_.ticks, at);
+}
+
+void BackendTimingModel::triangle(uint64_t dda_cycles, const std::vector<TimedPixel>& pixels) {
+  begin_triangle();
+  for (const TimedPixel& p : pixels) pixel(p);
+  end_triangle(dda_cycles);
 }
 
 void BackendTimingModel::drain() {

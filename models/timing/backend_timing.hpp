@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <vector>
 
 #include "config/params.hpp"
@@ -42,8 +43,12 @@ class BackendTimingModel {
   explicit BackendTimingModel(const Params& p);
 
   void begin_frame();  // the serial-port clear; the cache starts empty
-  // One triangle: its DDA clock count and its pixels in emission order.
+  // One triangle: its DDA clock count and its pixels in emission order;
+  // or the same as a stream (begin, each pixel as the DDA emits it, end).
   void triangle(uint64_t dda_cycles, const std::vector<TimedPixel>& pixels);
+  void begin_triangle();
+  void pixel(const TimedPixel& p);
+  void end_triangle(uint64_t dda_cycles);
   void end_frame();    // drain, write the cache page back, swap
 
   const BackendTiming& timing() const { return t_; }
@@ -57,6 +62,7 @@ class BackendTimingModel {
   uint64_t next_en(uint64_t tick) const;  // first DDA-enabled tick at or after `tick`
   void push(const TimedPixel& p, uint64_t tick);
   uint64_t fifo_count_at(uint64_t tick) const;  // pushed before `tick` and not popped before it
+  uint64_t wait_for_room(uint64_t at);            // the first DDA tick from `at` with room in the FIFO
   void drain();
 
   int period_, access_, blend_, vram_, limit_;
@@ -67,6 +73,8 @@ class BackendTimingModel {
   int cache_page_ = -1;
   std::deque<uint64_t> pops_;  // pop ticks of pixels possibly still in the FIFO
   std::deque<uint64_t> pushes_;
+  uint64_t tri_clock0_ = 0, tri_wait_ticks_ = 0;  // the triangle being streamed
+  std::optional<uint64_t> tri_last_push_;
   BackendTiming t_;
 };
 

@@ -26,7 +26,7 @@ struct RenderArgs {
 
 int run_render(const RenderArgs& a);
 int run_claims(const std::string& config);
-int run_bench(const std::string& config, const std::string& out_dir);
+int run_bench(const std::string& config, const std::string& out_dir, bool pipeline_only);
 struct RegressArgs {
   std::vector<std::string> traces;  // empty: every trace under traces/
   int random = 0;                   // extra random triangles

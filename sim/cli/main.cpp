@@ -38,6 +38,8 @@ int main(int argc, char** argv) {
   CLI::App* bench = app.add_subcommand("bench", "speed and error tables of the back ends");
   bench->add_option("--config", bench_config, "JSON file merged over config/girtd.json");
   bench->add_option("--out", bench_out, "output directory")->capture_default_str();
+  bool bench_pipeline = false;
+  bench->add_flag("--pipeline", bench_pipeline, "only the SystemC pipeline's table (approx against rtl); exit 1 on a disagreement");
 
   RegressArgs rg;
   CLI::App* regress = app.add_subcommand("regress", "RTL against the golden model, trace by trace");
@@ -61,7 +63,7 @@ int main(int argc, char** argv) {
   try {
     if (*render) return run_render(ra);
     if (*claims) return run_claims(claims_config);
-    if (*bench) return run_bench(bench_config, bench_out);
+    if (*bench) return run_bench(bench_config, bench_out, bench_pipeline);
     if (*regress) return run_regress(rg);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.formatted().c_str());

@@ -81,6 +81,30 @@ LoadedInput load_input(const RenderArgs& a, const Params& params) {
   return in;
 }
 
+// The timed back ends' summary: the 20 Mpixel/s verdict and where the time went.
+void print_throughput(const nlohmann::json& r) {
+  const double t = r["modeled_time_s"];
+  const auto& split = r["time_split"];
+  auto pct = [&](const char* k) { return 100.0 * split[k].get<double>() / t; };
+  std::printf("  throughput %s: modeled %.2f Mpixel/s against the %.0f Mpixel/s target (%.6f s modeled; %.2f with the "
+              "DDA fed)\n",
+              r["target_met"].get<bool>() ? "PASS" : "FAIL", r["modeled_mpixels_per_s"].get<double>(),
+              r["target_mpixels_per_s"].get<double>(), t, r["back_end_mpixels_per_s"].get<double>());
+  const std::string bottleneck = r["bottleneck"];
+  std::printf("  time       bottleneck %s (busy %.1f %%); DDA busy %.1f %%, on a full FIFO %.1f %%, starved by the "
+              "front end %.1f %%; HAD on page swaps %.1f %%\n",
+              bottleneck.c_str(), 100.0 * r["stages"][bottleneck]["utilization"].get<double>(), pct("dda_busy_s"),
+              pct("dda_fifo_full_s"), pct("dda_starved_s"), pct("had_page_wait_s"));
+  std::printf("  cache      %llu accesses, %llu page misses, nac %.2f\n",
+              static_cast<unsigned long long>(r["cache"]["accesses"].get<uint64_t>()),
+              static_cast<unsigned long long>(r["cache"]["page_misses"].get<uint64_t>()),
+              r["cache"]["nac"].get<double>());
+  if (r.contains("preparer_triangles_per_s"))
+    std::printf("  preparer   %.0f triangles/s delivered (capacity %.0f; the thesis asks for %.0f)\n",
+                r["preparer_triangles_per_s"].get<double>(), r["preparer_capacity_triangles_per_s"].get<double>(),
+                r["target_preparer_triangles_per_s"].get<double>());
+}
+
 }  // namespace
 
 int run_render(const RenderArgs& a) {
@@ -154,6 +178,7 @@ int run_render(const RenderArgs& a) {
       std::printf("  DDA        %llu clocks, efficiency %.1f %%, %.2f Mpixel/s DDA-bound at %.0f ns\n",
                   static_cast<unsigned long long>(s.dda->cycles), 100.0 * report["dda_efficiency"].get<double>(),
                   report["dda_bound_mpixels_per_s"].get<double>(), params.dda_clock_ns);
+    if (s.timing) print_throughput(report);
     std::printf("  wall       %.3f s\n", s.wall_s);
     std::printf("  image      %s\n  report     %s\n", files.path("frame.png").c_str(),
                 files.path("report.json").c_str());

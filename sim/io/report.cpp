@@ -87,7 +87,12 @@ json make_report(const ReportContext& ctx, const RunStats& s, const Params& para
   r["cache"] = json{{"accesses", nullptr}, {"page_misses", nullptr}, {"nac", nullptr}};
   if (s.timing) add_timing(r, s, params);
   json stages = json::object();
-  for (const StageStats& st : s.stages) stages[st.name] = stage_json(st, s.timing);
+  json order = json::array();
+  for (const StageStats& st : s.stages) {
+    stages[st.name] = stage_json(st, s.timing);
+    order.push_back(st.name);
+  }
+  r["stage_order"] = order;
   r["stages"] = stages;
   if (s.preparer) {
     r["preparer"] = json{{"prepared", s.preparer->prepared},
@@ -153,15 +158,17 @@ std::string throughput_markdown(const json& r) {
   return o.str();
 }
 
-std::string stages_markdown(const json& stages) {
+std::string stages_markdown(const json& stages, const json& order) {
   std::ostringstream o;
   o << "| stage | items | busy_s | stall_s | starved_s | blocked_s | utilization | FIFO max in |\n"
     << "|---|---|---|---|---|---|---|---|\n";
   auto cell = [](const json& st, const char* k) { return st.contains(k) ? num(st.at(k)) : std::string("not modeled"); };
-  for (auto it = stages.begin(); it != stages.end(); ++it)
-    o << "| " << it.key() << " | " << it->at("items") << " | " << cell(*it, "busy_s") << " | " << cell(*it, "stall_s")
+  for (const json& name : order) {
+    const json* it = &stages.at(name.get<std::string>());
+    o << "| " << name.get<std::string>() << " | " << it->at("items") << " | " << cell(*it, "busy_s") << " | " << cell(*it, "stall_s")
       << " | " << cell(*it, "starved_s") << " | " << cell(*it, "blocked_s") << " | " << cell(*it, "utilization")
       << " | " << cell(*it, "fifo_in_max") << " |\n";
+  }
   return o.str();
 }
 
@@ -200,8 +207,8 @@ std::string report_markdown(const json& r) {
     for (auto it = r.at("frontend").begin(); it != r.at("frontend").end(); ++it)
       o << "| `" << it.key() << "` | " << it->dump() << " |\n";
   }
-  o << "\nStages:\n\n" << stages_markdown(r.at("stages"));
-  o << "\nNot modeled by this back end: ";
+  o << "\nStages:\n\n" << stages_markdown(r.at("stages"), r.at("stage_order"));
+  o << "\nNot modeled by this back end: " << (r.at("not_modeled").empty() ? "nothing" : "");
   for (const auto& k : r.at("not_modeled")) o << "`" << k.get<std::string>() << "` ";
   o << "\n";
   return o.str();

@@ -24,14 +24,14 @@ class ApproxEngine : public BackEndEngine {
     timing_.begin_frame();
   }
   void draw(const DdaParams& d) override {
-    pixels_.clear();
+    timing_.begin_triangle();
     const DdaRunStats st = dda_.run(d, [&](const DdaEmit& e) {
-      pixels_.push_back({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel)});
+      timing_.pixel({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel)});
     });
-    timing_.triangle(st.cycles, pixels_);
+    timing_.end_triangle(st.cycles);
     accumulate(r_.dda, st);
     ++r_.triangles_drawn;
-    r_.pixels_generated += pixels_.size();
+    r_.pixels_generated += st.emitted;
   }
   void end_frame() override {
     timing_.end_frame();
@@ -59,7 +59,6 @@ class ApproxEngine : public BackEndEngine {
   FrameBuffer fb_;
   Had had_;
   BackendTimingModel timing_;
-  std::vector<TimedPixel> pixels_;
   BackEndResult r_;
 };
 
