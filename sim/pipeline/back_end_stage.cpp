@@ -29,6 +29,7 @@ void BackEndStage::sync_to(uint64_t tick) {
 void BackEndStage::run() {
   uint64_t triangles = 0;
   for (;;) {
+    const uint64_t before = engine_.now_tick();  // the run's end, if the next token is the last
     sync_to(engine_.ready_tick());
     Token<DdaParams> tok;
     if (!in.nb_read(tok)) {
@@ -45,14 +46,14 @@ void BackEndStage::run() {
       case TokenKind::kItem:
         ++a_.items;
         engine_.draw(tok.item);
-        if (progress_ && (++triangles & 63) == 0) progress_(tok.frame, triangles, at(engine_.now_tick()).to_seconds());
+        if (progress_ && (++triangles & 15) == 0) progress_(tok.frame, triangles, at(engine_.now_tick()).to_seconds());
         break;
       case TokenKind::kFrameEnd:
         engine_.end_frame();
         if (frame_done_) frame_done_(tok.frame);
         break;
       case TokenKind::kEnd:
-        sync_to(engine_.now_tick());
+        end_tick_ = before;  // not the wait for a DDA clock that no parameter set needed
         finished_ = true;
         return;
     }

@@ -33,6 +33,7 @@ class BackEndStage : public sc_core::sc_module {
                Progress progress);
 
   bool finished() const { return finished_; }
+  uint64_t end_tick() const { return end_tick_; }  // the last frame's swap
 
  private:
   void run();
@@ -48,6 +49,7 @@ class BackEndStage : public sc_core::sc_module {
   FrameDone frame_done_;
   Progress progress_;
   bool finished_ = false;
+  uint64_t end_tick_ = 0;
 };
 
 }  // namespace girtd

@@ -51,6 +51,7 @@ class Pipeline {
       : p_(p), opt_(opt), engine_(make_back_end_engine(backend, p)), backend_(backend) {
     const Trace& in = polygons ? *polygons : trace;
     for (const TraceFrame& f : in.frames) settings_.push_back(f.settings);
+    for (const TraceFrame& f : trace.frames) total_items_ += f.triangles.size() + f.dda.size();  // for the progress line
     if (polygons) build_from_polygons(*polygons);
     else if (trace.level == TraceLevel::kTriangle) build_from_triangles(trace);
     else build_from_dda(trace);
@@ -270,8 +271,10 @@ class Pipeline {
       progress = [this](size_t frame, uint64_t triangles, double modeled_s) {
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
         if (wall < 1.0) return;
-        std::fprintf(stderr, "\r[girtd] %s: frame %zu/%zu, %llu triangles, %.3f ms modeled, %.1f s", backend_.c_str(),
-                     frame + 1, settings_.size(), static_cast<unsigned long long>(triangles), modeled_s * 1e3, wall);
+        std::fprintf(stderr, "\r[girtd] %s: frame %zu/%zu, %llu/%llu triangles (%.0f %%), %.3f ms modeled, %.1f s wall ",
+                     backend_.c_str(), frame + 1, settings_.size(), static_cast<unsigned long long>(triangles),
+                     static_cast<unsigned long long>(total_items_),
+                     total_items_ ? 100.0 * double(triangles) / double(total_items_) : 0.0, modeled_s * 1e3, wall);
         progress_printed_ = true;
       };
     back_end_ = std::make_unique<BackEndStage>("back_end", *engine_, settings_, p_.base_tick_ns, a, fifo_activity(in),
@@ -305,12 +308,13 @@ class Pipeline {
   std::vector<RgbImage> per_frame_;
   std::chrono::steady_clock::time_point wall0_;
   bool progress_printed_ = false;
+  uint64_t total_items_ = 0;
 };
 
 void Pipeline::collect(RunStats& s) const {
   const BackEndResult be = engine_->result();
   const double tick_s = p_.base_tick_ns * 1e-9;
-  const double modeled = double(be.ticks) * tick_s;
+  const double modeled = double(back_end_->end_tick()) * tick_s;
   s.triangles_in = back_activity_->items;
   s.triangles_drawn = be.triangles_drawn;
   s.pixels_generated = be.pixels_generated;

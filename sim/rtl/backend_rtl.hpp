@@ -28,6 +28,9 @@ struct BackendCounters {
   uint64_t accounted() const { return written + blended + z_rejected + dropped; }
 };
 
+// Keep one instance alive at a time: two live Verilated models of the same
+// top (even in separate contexts) share scope names, and Verilator 5.006
+// deadlocks destroying the second (seen in testbench/pipeline).
 class BackendRtl {
  public:
   // `x_seed` != 0 randomizes X/uninitialized state (meaningful in the check build).

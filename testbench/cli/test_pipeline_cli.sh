@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# The SystemC pipeline's back ends (approx, rtl) from the command line: the
+# same frames as golden, the throughput keys, refusals, dump, progress.
+# Usage: test_pipeline_cli.sh GIRTD_BINARY REPO_ROOT
+source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh" "$1" "$2"
+
+sha() { jq -r .image_sha256 "$1/report.json"; }
+
+# 1. Every frame of a two-frame trace is golden's, on both timed back ends.
+for b in golden approx rtl; do
+  "$GIRTD" render traces/equilateral_200.trace --backend $b --frames all --out "$TMP/eq_$b" --quiet && ok || bad "$b render"
+done
+for b in approx rtl; do
+  for f in frame_000.png frame_001.png frame.png; do
+    cmp -s "$TMP/eq_golden/$f" "$TMP/eq_$b/$f" && ok || bad "$b $f differs from golden's"
+  done
+  jq -e '.pixels_generated == (.pixels_written + .pixels_blended + .pixels_z_rejected + .pixels_dropped)' \
+    "$TMP/eq_$b/report.json" >/dev/null && ok || bad "$b: pixel accounting"
+done
+
+# 2. A model through the timed front end: same counts as the untimed one.
+for b in golden approx; do
+  "$GIRTD" render traces/models/star.obj --backend $b --out "$TMP/star_$b" --quiet && ok || bad "star $b"
+done
+[[ $(jq -c .frontend "$TMP/star_golden/report.json") == $(jq -c .frontend "$TMP/star_approx/report.json") ]] \
+  && ok || bad "front-end counts differ between golden and approx"
+[[ $(sha "$TMP/star_golden") == $(sha "$TMP/star_approx") ]] && ok || bad "star: approx frame differs"
+
+# 3. The throughput keys: present, non-null, consistent.
+r="$TMP/star_approx/report.json"
+for k in modeled_time_s modeled_mpixels_per_s back_end_mpixels_per_s bottleneck target_met cache.accesses \
+         cache.page_misses cache.nac time_split.dda_busy_s time_split.dda_fifo_full_s time_split.dda_starved_s \
+         time_split.had_page_wait_s preparer_triangles_per_s preparer_capacity_triangles_per_s \
+         target_preparer_triangles_per_s stages.lighting.busy_s stages.dda.starved_s stages.had.fifo_in_max; do
+  jq -e ".$k != null" "$r" >/dev/null && ok || bad "report lacks $k"
+done
+jq -e '.not_modeled == []' "$r" >/dev/null && ok || bad "approx leaves keys unmodeled"
+jq -e '.stage_order == ["lighting","view","depth_clip","projection","triangulator","window_clip","depth_sort","preparer","dda","had"]' \
+  "$r" >/dev/null && ok || bad "stage order: $(jq -c .stage_order "$r")"
+jq -e '(.modeled_mpixels_per_s - .pixels_generated / .modeled_time_s / 1e6 | fabs) < 1e-6' "$r" >/dev/null \
+  && ok || bad "modeled rate is not pixels over modeled time"
+jq -e '[.stages[] | select(.fifo_in_max != null) | .fifo_in_max] | max <= 16' "$r" >/dev/null \
+  && ok || bad "a FIFO held more than its depth"
+jq -e '.bottleneck as $b | .stages[$b].busy_s == ([.stages[].busy_s] | max)' "$r" >/dev/null \
+  && ok || bad "bottleneck is not the busiest stage"
+grep -qE "^(PASS|FAIL): modeled .* Mpixel/s against the 20 Mpixel/s target" "$TMP/star_approx/report.md" \
+  && ok || bad "report.md lacks the target verdict"
+
+# 4. Refusals: exit 2, one line, no output.
+"$GIRTD" render traces/thesis/equilateral_200.trace --backend approx --out "$TMP/th" 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && $(wc -l < "$TMP/err") -eq 1 && ! -e "$TMP/th" ]] && ok || bad "thesis trace on approx: exit $rc"
+printf '{"had": {"write_behind": true}}\n' > "$TMP/wb.json"
+"$GIRTD" render traces/equilateral_200.trace --backend approx --config "$TMP/wb.json" --out "$TMP/wb" 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 ]] && grep -q "write_behind" "$TMP/err" && ok || bad "approx with write-behind: exit $rc"
+"$GIRTD" render traces/equilateral_200.trace --backend rtl --config "$TMP/wb.json" --out "$TMP/wb_rtl" --quiet \
+  && ok || bad "rtl with write-behind failed"
+[[ $(sha "$TMP/wb_rtl") == $(sha "$TMP/eq_golden") ]] && ok || bad "write-behind changed the frame"
+
+# 5. --dump from a timed back end equals golden's dump.
+"$GIRTD" render traces/z_overlap.trace --backend golden --out "$TMP/zg" --dump "dda=$TMP/zg.dda" --quiet && ok || bad "dump golden"
+"$GIRTD" render traces/z_overlap.trace --backend approx --out "$TMP/za" --dump "dda=$TMP/za.dda" --quiet && ok || bad "dump approx"
+cmp -s <(grep -v '^#' "$TMP/zg.dda") <(grep -v '^#' "$TMP/za.dda") && ok || bad "approx dump differs from golden's"
+
+# 6. A run longer than a second shows progress on a terminal, and not
+#    when stderr is a file.
+script -qec "'$GIRTD' render traces/scenes/window.json --backend rtl --out '$TMP/win' --quiet" /dev/null \
+  > "$TMP/tty" 2>&1 || true
+[[ -s "$TMP/win/report.json" ]] && ok || bad "render on a terminal"
+grep -qE "\[girtd\] rtl: frame 1/1, [0-9]+/[0-9]+ triangles" "$TMP/tty" && ok || bad "no progress line: $(tail -c 300 "$TMP/tty")"
+"$GIRTD" render traces/scenes/window.json --backend rtl --out "$TMP/win2" --quiet 2> "$TMP/err" && ok || bad "rtl render"
+[[ ! -s "$TMP/err" ]] && ok || bad "stderr not empty without a terminal: $(head -c 200 "$TMP/err")"
+
+finish

@@ -1,0 +1,166 @@
+// The SystemC pipeline's timing against expectations worked out by hand
+// (a stage's time = its flops over its rate), against the bare back ends
+// (the coupling must add no tick), and its timed front end against the
+// untimed one. One simulation per TEST_CASE: SystemC elaborates once per
+// process, and catch_discover_tests runs each case in its own.
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "backends/golden_backend.hpp"
+#include "backends/render_session.hpp"
+#include "dda/dda_preparer.hpp"
+#include "frontend/front_end_runner.hpp"
+#include "io/scene_reader.hpp"
+#include "pipeline/pipeline.hpp"
+#include "rtl/backend_rtl.hpp"
+#include "timing/backend_timing.hpp"
+#include "timing/stage_costs.hpp"
+#include "workloads/random_triangles.hpp"
+
+namespace girtd {
+namespace {
+
+const StageStats& stage(const RunStats& s, const std::string& name) {
+  for (const StageStats& st : s.stages)
+    if (st.name == name) return st;
+  FAIL("no stage " << name);
+  throw;
+}
+
+// Small random triangles (at most 12 pixels across), one frame.
+Trace small_triangles(int n, uint32_t seed) {
+  std::mt19937 rng(seed);
+  Trace t;
+  t.path = "random";
+  t.level = TraceLevel::kTriangle;
+  t.frames.emplace_back();
+  for (int i = 0; i < n; ++i) t.frames[0].triangles.push_back(random_triangle(rng, 12.0));
+  return t;
+}
+
+// The same triangles prepared: a DDA-level trace (every set available at once).
+Trace prepared(const Trace& tri, const Params& p) {
+  Trace d;
+  d.path = "prepared";
+  d.level = TraceLevel::kDda;
+  DdaPreparer prep(p);
+  for (const TraceFrame& f : tri.frames) {
+    TraceFrame out;
+    out.settings = f.settings;
+    DdaParams dp;
+    for (const Triangle& t : f.triangles)
+      if (prep.prepare(t, f.settings, dp) == PrepareResult::kReady) out.dda.push_back(dp);
+    d.frames.push_back(out);
+  }
+  return d;
+}
+
+Params with(const std::string& json) { return Params::with_overrides(nlohmann::json::parse(json), "test"); }
+
+}  // namespace
+
+TEST_CASE("a slow preparer sets the pace: busy N x 115 flop / rate, the DDA starved between", "[pipeline]") {
+  const double rate = 1e5;  // 1.15 ms per triangle
+  const Params p = with(R"({"pipeline": {"flops_per_s": {"preparer": 1e5, "window_clip": 1e12}}})");
+  const Trace trace = small_triangles(40, 3);
+  const RenderOutput out = run_pipeline("approx", trace, nullptr, p, {});
+  const RunStats& s = out.stats;
+  const double per_triangle = 115.0 / rate;
+  REQUIRE(preparer_ops().flops() == 115.0);
+  CHECK(stage(s, "preparer").items == 40);
+  CHECK(*stage(s, "preparer").busy_s == Approx(40 * per_triangle).epsilon(1e-9));
+  REQUIRE(s.timing);
+  // The run lasts the preparer's 40 triangles, plus the frame clear before
+  // the first can be drawn and the last one's drawing (well under 0.1 ms).
+  const double clear_s = 256 * (200 + 220) * 1e-9;
+  CHECK(s.timing->modeled_s >= 40 * per_triangle);
+  CHECK(s.timing->modeled_s <= 40 * per_triangle + clear_s + 1e-4);
+  CHECK(s.timing->bottleneck == "preparer");
+  // The DDA waits for every set but the time it spends drawing.
+  CHECK(s.timing->dda_starved_s == Approx(s.timing->modeled_s - clear_s).margin(0.05 * s.timing->modeled_s));
+  CHECK(s.timing->preparer_capacity_triangles_per_s == Approx(rate / 115.0));
+}
+
+TEST_CASE("a FIFO two deep blocks the stage before a slow one and never holds more than two", "[pipeline]") {
+  const Params p = with(R"({"pipeline": {"fifo_depth": 2, "flops_per_s": {"preparer": 1e5, "window_clip": 1e12}}})");
+  const RenderOutput out = run_pipeline("approx", small_triangles(30, 4), nullptr, p, {});
+  const StageStats& clip = stage(out.stats, "window_clip");
+  const StageStats& prep = stage(out.stats, "preparer");
+  // The window clip finishes at once, then waits for the preparer to take
+  // each triangle: blocked for nearly all of the preparer's time.
+  CHECK(*clip.blocked_s == Approx(*prep.busy_s).margin(3 * 115.0 / 1e5));
+  CHECK(*prep.fifo_in_max == 2);
+  for (const StageStats& st : out.stats.stages)
+    if (st.fifo_in_max && st.name != "had") CHECK(*st.fifo_in_max <= 2);
+}
+
+TEST_CASE("rtl in the pipeline takes exactly the bare Verilated back end's ticks", "[pipeline][rtl]") {
+  const Params p = Params::defaults();
+  const Trace dda = prepared(small_triangles(200, 5), p);
+  BackendCounters c;
+  std::vector<uint8_t> bare_rgb;
+  {  // one Verilated back end alive at a time (backend_rtl.hpp)
+    BackendRtl bare(p);
+    bare.begin_frame(dda.frames[0].settings.background);
+    for (const DdaParams& d : dda.frames[0].dda) bare.draw(d);
+    bare.end_frame();
+    c = bare.counters();
+    bare_rgb = bare.shown_rgb();
+  }
+
+  const RenderOutput out = run_pipeline("rtl", dda, nullptr, p, {});
+  REQUIRE(out.stats.timing);
+  CHECK(out.stats.timing->modeled_s == Approx(double(c.ticks) * 5e-9).epsilon(1e-12));
+  CHECK(out.stats.pixels_generated == c.pixels_generated);
+  CHECK(out.stats.had.written == c.written);
+  CHECK(out.stats.timing->page_misses == c.page_misses);
+  CHECK(out.stats.timing->dda_starved_s == 0.0);
+  CHECK(out.shown.rgb == bare_rgb);
+}
+
+TEST_CASE("approx in the pipeline takes exactly the event model's ticks", "[pipeline]") {
+  const Params p = Params::defaults();
+  const Trace dda = prepared(small_triangles(300, 6), p);
+  BackendTimingModel model(p);
+  DdaEngine engine(p);
+  FrameBuffer fb(1024, 1024, uint16_t(p.depth_clear));
+  Had had(fb, p.one_minus_nf);
+  fb.clear_back(dda.frames[0].settings.background);
+  model.begin_frame();
+  std::vector<TimedPixel> px;
+  for (const DdaParams& d : dda.frames[0].dda) {
+    px.clear();
+    const DdaRunStats st = engine.run(d, [&](const DdaEmit& e) { px.push_back({e.cycle, e.pixel.x, e.pixel.y, had.update(e.pixel)}); });
+    model.triangle(st.cycles, px);
+  }
+  model.end_frame();
+  const RenderOutput out = run_pipeline("approx", dda, nullptr, p, {});
+  CHECK(out.stats.timing->modeled_s == Approx(double(model.timing().ticks) * 5e-9).epsilon(1e-12));
+  CHECK(out.stats.timing->page_misses == model.timing().page_misses);
+}
+
+TEST_CASE("the timed front end, stages working on different frames at once, gives the untimed one's frames", "[pipeline]") {
+  const Params p = Params::defaults();
+  const Trace polygons = read_scene("traces/scenes/animation.json", p);
+  REQUIRE(polygons.frames.size() > 1);
+  const FrontEndRun fe = run_front_end(polygons, p);
+  GoldenBackend golden(p);
+  RenderOptions keep;
+  keep.keep_all_frames = true;
+  const RenderOutput want = render_trace(fe.triangles, golden, p, keep);
+
+  const RenderOutput got = run_pipeline("approx", fe.triangles, &polygons, p, keep);
+  REQUIRE(got.stats.frontend);
+  CHECK(got.stats.frontend->triangles_out == fe.counts.triangles_out);
+  CHECK(got.stats.frontend->depth_sort_comparisons == fe.counts.depth_sort_comparisons);
+  CHECK(got.stats.frontend->full_sorts == fe.counts.full_sorts);
+  CHECK(got.stats.frontend->polygons == fe.counts.polygons);
+  CHECK(got.stats.frames == polygons.frames.size());
+  REQUIRE(got.per_frame.size() == want.per_frame.size());
+  for (size_t i = 0; i < want.per_frame.size(); ++i) CHECK(got.per_frame[i].rgb == want.per_frame[i].rgb);
+  // Lighting starts the second frame while the frame-long stages still hold the first.
+  CHECK(got.stats.timing->modeled_s > 0);
+}
+
+}  // namespace girtd
