@@ -43,6 +43,9 @@ module girtd_backend (
     // tick is a DDA clock spent on a triangle.
     output logic [3:0]  dda_state_o,
     output logic        dda_active_o,
+    // ... and the pixel the DDA pushes into the FIFO on this tick, if any.
+    output logic        pixel_push_o,
+    output logic [9:0]  pixel_x_o, pixel_y_o,
     // Counters
     output logic [47:0] dda_clocks_o,     // DDA clocks spent on triangles
     output logic [47:0] dda_wait_ticks_o, // DDA clocks lost waiting on a full FIFO (in ticks)
@@ -118,4 +121,7 @@ module girtd_backend (
   assign idle_o = in_ready_o && !out_valid && dda_state == 4'd8 && fifo_empty && had_idle && !vram_busy;
   assign dda_state_o = dda_state;
   assign dda_active_o = dda_active;
+  assign pixel_push_o = push;
+  assign pixel_x_o = ox;
+  assign pixel_y_o = oy;
 endmodule

@@ -8,6 +8,7 @@
 
 #include "backends/backend.hpp"
 #include "backends/dump_tap.hpp"
+#include "wave/wave_options.hpp"
 #include "had/frame_buffer.hpp"
 #include "io/png_io.hpp"
 #include "io/trace.hpp"
@@ -19,6 +20,7 @@ struct RenderOutput {
   RgbImage shown;                   // the displayed buffer after the last frame
   std::vector<uint16_t> z;          // the Z buffer after the last frame
   std::vector<RgbImage> per_frame;  // with keep_all_frames
+  std::vector<std::string> wave_files;  // the waveform and its .gtkw and pixel log
 };
 
 struct RenderOptions {
@@ -28,6 +30,7 @@ struct RenderOptions {
   // The polygon-level trace the rendered one came from (models, scenes), for
   // --dump polygons=FILE; frames correspond one to one.
   const Trace* polygon_source = nullptr;
+  std::optional<WaveOptions> wave;  // --wave (the rtl back end)
 };
 
 RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& params, const RenderOptions& opt);

@@ -33,8 +33,8 @@ DumpRequest parse_dump(const std::string& spec) {
 }
 
 void reject_unbuilt_options(const RenderArgs& a) {
-  if (!a.wave.empty() || !a.wave_window.empty() || !a.wave_scopes.empty())
-    throw InputError("--wave", 0, "waveforms are not built yet");
+  if (!a.wave.empty() && a.backend != "rtl")
+    throw InputError("--wave", 0, "waveforms record the RTL in the SystemC pipeline: use --backend rtl");
   if (a.frames != "last" && a.frames != "all")
     throw InputError("--frames", 0, "expected 'last' or 'all', got '" + a.frames + "'");
 }
@@ -123,6 +123,8 @@ int run_render(const RenderArgs& a) {
   if (!a.dump.empty()) opt.dump = parse_dump(a.dump);
   opt.progress = isatty(STDERR_FILENO);
   if (input.polygons) opt.polygon_source = &*input.polygons;
+  if (!a.wave.empty() || !a.wave_window.empty() || !a.wave_scopes.empty())
+    opt.wave = parse_wave_options(a.wave, a.wave_window, a.wave_scopes, params.dda_clock_ns);
   RenderOutput out;
   if (pipelined) {
     const Trace* polygons = input.polygons ? &*input.polygons : nullptr;
@@ -183,6 +185,9 @@ int run_render(const RenderArgs& a) {
     std::printf("  image      %s\n  report     %s\n", files.path("frame.png").c_str(),
                 files.path("report.json").c_str());
     if (opt.dump) std::printf("  dump       %s\n", opt.dump->path.c_str());
+    if (!out.wave_files.empty())
+      std::printf("  waveform   %s (open: gtkwave %s %s; pixels pushed: %s)\n", out.wave_files[0].c_str(),
+                  out.wave_files[0].c_str(), out.wave_files[1].c_str(), out.wave_files[2].c_str());
   }
   return 0;
 }

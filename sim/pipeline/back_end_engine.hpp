@@ -20,6 +20,8 @@
 
 namespace girtd {
 
+class BackendRtl;
+
 struct BackEndResult {
   uint64_t ticks = 0;             // base ticks from the first frame's clear to the last swap
   uint64_t triangles_drawn = 0;
@@ -48,9 +50,11 @@ class BackEndEngine {
   virtual BackEndResult result() const = 0;
   virtual RgbImage shown() const = 0;
   virtual std::vector<uint16_t> z_plane() const = 0;
+  // Waveforms (rtl only): the RTL to record, and a call on every tick.
+  virtual BackendRtl* rtl() { return nullptr; }
 };
 
-// "approx" or "rtl".
-std::unique_ptr<BackEndEngine> make_back_end_engine(const std::string& backend, const Params& p);
+// "approx" or "rtl"; `traced`: the rtl engine on the build with FST tracing.
+std::unique_ptr<BackEndEngine> make_back_end_engine(const std::string& backend, const Params& p, bool traced);
 
 }  // namespace girtd

@@ -26,19 +26,61 @@ void BackEndStage::sync_to(uint64_t tick) {
   if (t > sc_time_stamp()) wait(t - sc_time_stamp());
 }
 
+void BackEndStage::sync_to_ns(double t_ns) {
+  const sc_time t(t_ns, sc_core::SC_NS);
+  if (t > sc_time_stamp()) wait(t - sc_time_stamp());
+}
+
+// A tick of the RTL inside the waveform's window: bring SystemC time to it,
+// then dump both sides. The clock is low for the first 2 ns of a 5 ns tick
+// (the dump before the edge) and high after it.
+void BackEndStage::on_tick(const BackendRtl::TickProbe& p) {
+  const double edge_ns = double(p.tick) * tick_ns_;
+  const double t_ns = p.rising ? edge_ns : edge_ns - std::floor(tick_ns_ / 2);
+  if (!wave_->wants(t_ns)) return;
+  sync_to_ns(t_ns);
+  if (!p.rising && p.pixel_push) wave_->log_pixel(edge_ns, p.pixel_x, p.pixel_y);
+  wave_->set_frame(static_cast<uint32_t>(frame_));
+  wave_->dump(t_ns);
+}
+
+// The next token; a DDA waiting for one is starved. Inside a waveform's
+// window the RTL keeps ticking (and dumping) while it waits.
+Token<DdaParams> BackEndStage::next_token() {
+  Token<DdaParams> tok;
+  if (in.nb_read(tok)) return tok;
+  const sc_time t0 = sc_time_stamp();
+  a_.state = StageState::kStarved;
+  for (;;) {
+    const double now_ns = sc_time_stamp().to_seconds() * 1e9;
+    if (!wave_ || now_ns > wave_->window_end_ns()) {
+      tok = in.read();
+      engine_.idle_until(tick_of(sc_time_stamp()));
+      break;
+    }
+    if (now_ns + tick_ns_ < wave_->window_start_ns()) {
+      wait(sc_time(wave_->window_start_ns(), sc_core::SC_NS) - sc_time_stamp(), in.data_written_event());
+      engine_.idle_until(tick_of(sc_time_stamp()));
+    } else {
+      engine_.idle_until(engine_.now_tick() + 1);  // the tick hook waits for SystemC time
+    }
+    if (in.nb_read(tok)) break;
+  }
+  a_.starved_s += (sc_time_stamp() - t0).to_seconds();
+  a_.state = StageState::kBusy;
+  return tok;
+}
+
 void BackEndStage::run() {
+  if (wave_) engine_.rtl()->on_tick([this](const BackendRtl::TickProbe& p) { on_tick(p); });
   uint64_t triangles = 0;
+  a_.state = StageState::kBusy;
   for (;;) {
     const uint64_t before = engine_.now_tick();  // the run's end, if the next token is the last
     sync_to(engine_.ready_tick());
-    Token<DdaParams> tok;
-    if (!in.nb_read(tok)) {
-      const sc_time t0 = sc_time_stamp();
-      tok = in.read();
-      a_.starved_s += (sc_time_stamp() - t0).to_seconds();
-      engine_.idle_until(tick_of(sc_time_stamp()));
-    }
+    const Token<DdaParams> tok = next_token();
     in_fifo_.pop();
+    frame_ = tok.frame;
     switch (tok.kind) {
       case TokenKind::kFrameBegin:
         engine_.begin_frame(frames_.at(tok.frame));

@@ -15,6 +15,8 @@
 #include "pipeline/back_end_engine.hpp"
 #include "pipeline/stage_activity.hpp"
 #include "pipeline/token.hpp"
+#include "rtl/backend_rtl.hpp"
+#include "wave/wave_recorder.hpp"
 
 namespace girtd {
 
@@ -33,6 +35,9 @@ class BackEndStage : public sc_core::sc_module {
                Progress progress);
 
   bool finished() const { return finished_; }
+  // Record a waveform: every tick in the window is dumped once SystemC
+  // time has reached it (the engine must be rtl).
+  void record(WaveRecorder* rec) { wave_ = rec; }
   uint64_t end_tick() const { return end_tick_; }  // the last frame's swap
 
  private:
@@ -40,6 +45,9 @@ class BackEndStage : public sc_core::sc_module {
   sc_core::sc_time at(uint64_t tick) const;
   uint64_t tick_of(const sc_core::sc_time& t) const;  // the first tick at or after t
   void sync_to(uint64_t tick);
+  void sync_to_ns(double t_ns);
+  Token<DdaParams> next_token();
+  void on_tick(const BackendRtl::TickProbe& p);
 
   BackEndEngine& engine_;
   const std::vector<FrameSettings>& frames_;
@@ -48,6 +56,8 @@ class BackEndStage : public sc_core::sc_module {
   FifoActivity& in_fifo_;
   FrameDone frame_done_;
   Progress progress_;
+  WaveRecorder* wave_ = nullptr;
+  size_t frame_ = 0;
   bool finished_ = false;
   uint64_t end_tick_ = 0;
 };

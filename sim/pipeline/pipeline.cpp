@@ -15,16 +15,17 @@
 #include "pipeline/back_end_stage.hpp"
 #include "pipeline/source_stage.hpp"
 #include "pipeline/timed_stage.hpp"
+#include "wave/wave_recorder.hpp"
 #include "timing/stage_costs.hpp"
 
 namespace girtd {
 
 std::unique_ptr<BackEndEngine> make_approx_engine(const Params& p);
-std::unique_ptr<BackEndEngine> make_rtl_engine(const Params& p);
+std::unique_ptr<BackEndEngine> make_rtl_engine(const Params& p, bool traced);
 
-std::unique_ptr<BackEndEngine> make_back_end_engine(const std::string& backend, const Params& p) {
+std::unique_ptr<BackEndEngine> make_back_end_engine(const std::string& backend, const Params& p, bool traced) {
   if (backend == "approx") return make_approx_engine(p);
-  if (backend == "rtl") return make_rtl_engine(p);
+  if (backend == "rtl") return make_rtl_engine(p, traced);
   throw std::logic_error("not a pipeline back end: " + backend);
 }
 
@@ -48,7 +49,7 @@ class Pipeline {
  public:
   Pipeline(const std::string& backend, const Trace& trace, const Trace* polygons, const Params& p,
            const RenderOptions& opt)
-      : p_(p), opt_(opt), engine_(make_back_end_engine(backend, p)), backend_(backend) {
+      : p_(p), opt_(opt), engine_(make_back_end_engine(backend, p, opt.wave.has_value())), backend_(backend) {
     const Trace& in = polygons ? *polygons : trace;
     for (const TraceFrame& f : in.frames) settings_.push_back(f.settings);
     for (const TraceFrame& f : trace.frames) total_items_ += f.triangles.size() + f.dda.size();  // for the progress line
@@ -58,6 +59,7 @@ class Pipeline {
   }
 
   RenderOutput run() {
+    if (opt_.wave) start_wave(*opt_.wave);
     const auto t0 = std::chrono::steady_clock::now();
     wall0_ = t0;
     sc_core::sc_start();
@@ -70,6 +72,7 @@ class Pipeline {
     collect(out.stats);
     out.shown = engine_->shown();
     out.z = engine_->z_plane();
+    if (wave_) out.wave_files = wave_->finish();
     out.stats.wall_s = wall;  // the simulation (the frame read-out after it is not counted)
     return out;
   }
@@ -284,6 +287,19 @@ class Pipeline {
 
   void collect(RunStats& s) const;
 
+  // Every stage's activity and its input FIFO, in pipeline order, then the
+  // RTL, into one FST.
+  void start_wave(const WaveOptions& w) {
+    if (!engine_->rtl()) throw InputError("--wave", 0, "waveforms need --backend rtl");
+    wave_ = std::make_unique<WaveRecorder>(w);
+    std::map<const StageActivity*, const FifoActivity*> in_fifo;
+    for (const auto& [fifo, reader] : in_fifo_of_) in_fifo[reader] = fifo_records_.at(fifo).get();
+    for (const auto& a : activities_) wave_->add_stage(*a, in_fifo.count(a.get()) ? in_fifo[a.get()] : nullptr);
+    wave_->add_rtl(*engine_->rtl());
+    wave_->open();
+    back_end_->record(wave_.get());
+  }
+
   const Params& p_;
   const RenderOptions& opt_;
   std::unique_ptr<BackEndEngine> engine_;
@@ -308,6 +324,7 @@ class Pipeline {
   std::vector<RgbImage> per_frame_;
   std::chrono::steady_clock::time_point wall0_;
   bool progress_printed_ = false;
+  std::unique_ptr<WaveRecorder> wave_;
   uint64_t total_items_ = 0;
 };
 

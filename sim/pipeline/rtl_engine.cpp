@@ -10,7 +10,7 @@ namespace {
 
 class RtlEngine : public BackEndEngine {
  public:
-  explicit RtlEngine(const Params& p) : rtl_(p), width_(p.screen_width), height_(p.screen_height) {}
+  RtlEngine(const Params& p, bool traced) : rtl_(p, 0, traced), width_(p.screen_width), height_(p.screen_height) {}
   uint64_t ready_tick() override {
     rtl_.step_until_ready();
     return rtl_.ticks();
@@ -48,6 +48,7 @@ class RtlEngine : public BackEndEngine {
     return img;
   }
   std::vector<uint16_t> z_plane() const override { return rtl_.z_plane(); }
+  BackendRtl* rtl() override { return &rtl_; }
 
  private:
   BackendRtl rtl_;
@@ -57,6 +58,8 @@ class RtlEngine : public BackEndEngine {
 
 }  // namespace
 
-std::unique_ptr<BackEndEngine> make_rtl_engine(const Params& p) { return std::make_unique<RtlEngine>(p); }
+std::unique_ptr<BackEndEngine> make_rtl_engine(const Params& p, bool traced) {
+  return std::make_unique<RtlEngine>(p, traced);
+}
 
 }  // namespace girtd

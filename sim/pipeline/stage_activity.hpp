@@ -17,8 +17,11 @@ struct FifoActivity {
   void pop() { ++popped; }
 };
 
+enum class StageState : uint8_t { kStarved, kBusy, kBlocked };
+
 struct StageActivity {
   std::string name;
+  StageState state = StageState::kStarved;  // now (waveforms)
   uint64_t items = 0;    // items taken in (frame markers excluded)
   uint64_t emitted = 0;  // items handed on
   double flops = 0;      // arithmetic done (front-end stages and preparer)

@@ -48,7 +48,9 @@ class TimedStage : public sc_core::sc_module {
   void run() {
     for (;;) {
       const sc_core::sc_time t0 = sc_core::sc_time_stamp();
+      a_.state = StageState::kStarved;
       const Token<In> tok = in.read();
+      a_.state = StageState::kBusy;
       in_fifo_.pop();
       a_.starved_s += (sc_core::sc_time_stamp() - t0).to_seconds();
       work_.clear();
@@ -92,7 +94,9 @@ class TimedStage : public sc_core::sc_module {
 
   void write(const Token<Out>& t) {
     const sc_core::sc_time t0 = sc_core::sc_time_stamp();
+    a_.state = StageState::kBlocked;
     out.write(t);
+    a_.state = StageState::kBusy;
     out_fifo_.push();
     a_.blocked_s += (sc_core::sc_time_stamp() - t0).to_seconds();
   }

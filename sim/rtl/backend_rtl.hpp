@@ -6,12 +6,15 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
 #include "common/types.hpp"
 #include "config/params.hpp"
 #include "dda/dda_params.hpp"
+
+class VerilatedFstC;
 
 namespace girtd {
 
@@ -33,8 +36,9 @@ struct BackendCounters {
 // deadlocks destroying the second (seen in testbench/pipeline).
 class BackendRtl {
  public:
-  // `x_seed` != 0 randomizes X/uninitialized state (meaningful in the check build).
-  explicit BackendRtl(const Params& p, uint32_t x_seed = 0);
+  // `x_seed` != 0 randomizes X/uninitialized state (meaningful in the check
+  // build). `traced`: the build with FST tracing compiled in (for --wave).
+  explicit BackendRtl(const Params& p, uint32_t x_seed = 0, bool traced = false);
   ~BackendRtl();
   BackendRtl(const BackendRtl&) = delete;
   BackendRtl& operator=(const BackendRtl&) = delete;
@@ -49,6 +53,17 @@ class BackendRtl {
   void step_until_ready();
   void step_to(uint64_t tick);
   uint64_t ticks() const;
+  // Called twice on every base tick (waveforms): with the clock low, before
+  // the rising edge, and after it.
+  struct TickProbe {
+    uint64_t tick;     // the tick whose rising edge this is (ticks since reset)
+    bool rising;       // false: clock low, before the edge; true: after it
+    bool pixel_push;   // the DDA pushes a pixel into the FIFO at this edge
+    int pixel_x, pixel_y;
+  };
+  void on_tick(std::function<void(const TickProbe&)> hook);
+  // The traced build only: record every signal into an FST writer.
+  void trace(VerilatedFstC* tfp);
 
   BackendCounters counters() const;
   // The shown buffer (1024 x 1024 x 3 bytes) and Z, through the backdoor.
@@ -56,9 +71,7 @@ class BackendRtl {
   std::vector<uint16_t> z_plane() const;
 
  private:
-  void tick();
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<class BackendRtlDriver> impl_;
 };
 
 }  // namespace girtd

@@ -1,0 +1,59 @@
+#include "wave/wave_options.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+#include "common/input_error.hpp"
+
+namespace girtd {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+double parse_time(const std::string& text, double dda_clock_ns) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  const double v = std::strtod(begin, &end);
+  if (end == begin || !std::isfinite(v) || v < 0)
+    throw InputError("--wave-window", 0, "'" + text + "' is not a time (a number >= 0 with ns, us, ms, s or cycles)");
+  const std::string unit(end);
+  if (unit.empty() || unit == "ns") return v;
+  if (unit == "us") return v * 1e3;
+  if (unit == "ms") return v * 1e6;
+  if (unit == "s") return v * 1e9;
+  if (unit == "cycles" || unit == "c") return v * dda_clock_ns;
+  throw InputError("--wave-window", 0, "unknown unit '" + unit + "' in '" + text + "' (ns, us, ms, s or cycles)");
+}
+
+}  // namespace
+
+bool WaveOptions::vcd() const { return ends_with(path, ".vcd"); }
+
+WaveOptions parse_wave_options(const std::string& path, const std::string& window,
+                               const std::vector<std::string>& scopes, double dda_clock_ns) {
+  if (path.empty()) {
+    if (!window.empty()) throw InputError("--wave-window", 0, "needs --wave FILE");
+    if (!scopes.empty()) throw InputError("--wave-scope", 0, "needs --wave FILE");
+  }
+  WaveOptions w;
+  w.path = path;
+  if (!ends_with(path, ".fst") && !ends_with(path, ".vcd"))
+    throw InputError("--wave", 0, "'" + path + "': the waveform file must end in .fst or .vcd");
+  if (!window.empty()) {
+    const size_t colon = window.find(':');
+    if (colon == std::string::npos) throw InputError("--wave-window", 0, "expected T0:T1, got '" + window + "'");
+    w.t0_ns = parse_time(window.substr(0, colon), dda_clock_ns);
+    const std::string t1 = window.substr(colon + 1);
+    if (!t1.empty()) w.t1_ns = parse_time(t1, dda_clock_ns);
+    if (w.t1_ns <= w.t0_ns) throw InputError("--wave-window", 0, "T1 must be after T0 in '" + window + "'");
+  }
+  for (const std::string& s : scopes)
+    if (s.empty() || s.find_first_of(" \t") != std::string::npos)
+      throw InputError("--wave-scope", 0, "'" + s + "' is not a module path (e.g. TOP.girtd_backend.u_dda)");
+  w.scopes = scopes;
+  return w;
+}
+
+}  // namespace girtd

@@ -1,0 +1,247 @@
+#include "wave/wave_recorder.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <sys/wait.h>
+
+#include "common/input_error.hpp"
+#include "gtkwave/fstapi.h"
+#include "rtl/backend_rtl.hpp"
+#include "verilated_fst_c.h"
+
+namespace girtd {
+namespace fs = std::filesystem;
+
+// Verilator's trace callbacks (verilated_trace.h): declare at open, then
+// write every value in full once and the changes at each dump.
+struct WaveRecorder::StageProbe {
+  const StageActivity* a;
+  const FifoActivity* fifo;
+  uint32_t code = 0;
+  uint32_t occupancy() const { return fifo ? uint32_t(fifo->pushed - fifo->popped) : 0; }
+
+  static void init(void* self, VerilatedFst* t, uint32_t code) {
+    auto* p = static_cast<StageProbe*>(self);
+    p->code = code;
+    t->pushNamePrefix("pipeline ");
+    t->pushNamePrefix(p->a->name + " ");
+    t->declBit(code + 0, "busy", -1, FST_VD_IMPLICIT, FST_VT_VCD_WIRE, false, -1);
+    t->declBit(code + 1, "starved", -1, FST_VD_IMPLICIT, FST_VT_VCD_WIRE, false, -1);
+    t->declBit(code + 2, "blocked", -1, FST_VD_IMPLICIT, FST_VT_VCD_WIRE, false, -1);
+    t->declBus(code + 3, "fifo_in", -1, FST_VD_IMPLICIT, FST_VT_VCD_WIRE, false, -1, 31, 0);
+    t->declBus(code + 4, "items_in", -1, FST_VD_IMPLICIT, FST_VT_VCD_WIRE, false, -1, 31, 0);
+    t->declBus(code + 5, "items_out", -1, FST_VD_IMPLICIT, FST_VT_VCD_WIRE, false, -1, 31, 0);
+    t->popNamePrefix(2);
+  }
+  template <bool kFull>
+  static void write(void* self, VerilatedFst::Buffer* b) {
+    auto* p = static_cast<StageProbe*>(self);
+    uint32_t* o = b->oldp(p->code);
+    const StageActivity& a = *p->a;
+    const bool bits[3] = {a.state == StageState::kBusy, a.state == StageState::kStarved,
+                          a.state == StageState::kBlocked};
+    const uint32_t words[3] = {p->occupancy(), uint32_t(a.items), uint32_t(a.emitted)};
+    for (int i = 0; i < 3; ++i) {
+      if (kFull) b->fullBit(o + i, bits[i]);
+      else b->chgBit(o + i, bits[i]);
+    }
+    for (int i = 0; i < 3; ++i) {
+      if (kFull) b->fullIData(o + 3 + i, words[i], 32);
+      else b->chgIData(o + 3 + i, words[i], 32);
+    }
+  }
+};
+
+struct WaveRecorder::TopProbe {
+  const uint32_t* frame;
+  uint32_t code = 0;
+  static void init(void* self, VerilatedFst* t, uint32_t code) {
+    auto* p = static_cast<TopProbe*>(self);
+    p->code = code;
+    t->pushNamePrefix("pipeline ");
+    t->declBus(code, "frame", -1, FST_VD_IMPLICIT, FST_VT_VCD_WIRE, false, -1, 31, 0);
+    t->popNamePrefix(1);
+  }
+  template <bool kFull>
+  static void write(void* self, VerilatedFst::Buffer* b) {
+    auto* p = static_cast<TopProbe*>(self);
+    if (kFull) b->fullIData(b->oldp(p->code), *p->frame, 32);
+    else b->chgIData(b->oldp(p->code), *p->frame, 32);
+  }
+};
+
+WaveRecorder::WaveRecorder(WaveOptions opt)
+    : opt_(std::move(opt)), fst_tmp_(opt_.path + ".partial.fst"), pixels_tmp_(opt_.path + ".pixels.csv.partial") {
+  tfp_ = std::make_unique<VerilatedFstC>();
+  pixel_log_ = "time_ns,x,y\n";
+}
+
+WaveRecorder::~WaveRecorder() {
+  if (finished_) return;
+  if (tfp_ && tfp_->isOpen()) tfp_->close();
+  std::error_code ec;
+  for (const std::string& f : {fst_tmp_, pixels_tmp_, opt_.path + ".partial"}) fs::remove(f, ec);
+  fs::remove(opt_.path.substr(0, opt_.path.size() - 4) + ".gtkw.partial", ec);
+}
+
+void WaveRecorder::add_rtl(BackendRtl& rtl) {
+  rtl.trace(tfp_.get());
+  has_rtl_ = true;
+}
+
+void WaveRecorder::add_stage(const StageActivity& a, const FifoActivity* in_fifo) {
+  stages_.push_back(std::make_unique<StageProbe>(StageProbe{&a, in_fifo}));
+  StageProbe* p = stages_.back().get();
+  tfp_->spTrace()->addInitCb(&StageProbe::init, p);
+  tfp_->spTrace()->addFullCb(&StageProbe::write<true>, p);
+  tfp_->spTrace()->addChgCb(&StageProbe::write<false>, p);
+  stage_names_.push_back(a.name);
+}
+
+void WaveRecorder::open() {
+  top_ = std::make_unique<TopProbe>(TopProbe{&frame_});
+  tfp_->spTrace()->addInitCb(&TopProbe::init, top_.get());
+  tfp_->spTrace()->addFullCb(&TopProbe::write<true>, top_.get());
+  tfp_->spTrace()->addChgCb(&TopProbe::write<false>, top_.get());
+  // Verilator crashes on a file where the scope filter kept nothing: the
+  // pipeline's frame is always kept.
+  if (!opt_.scopes.empty()) {
+    tfp_->dumpvars(1, "pipeline");
+    for (const std::string& s : opt_.scopes) tfp_->dumpvars(99, s);
+  }
+  tfp_->set_time_resolution("1ns");
+  fs::create_directories(fs::absolute(opt_.path).parent_path());
+  tfp_->open(fst_tmp_.c_str());
+  if (!tfp_->isOpen()) throw InputError(opt_.path, 0, "cannot write the waveform file");
+}
+
+void WaveRecorder::dump(double t_ns) {
+  if (t_ns <= last_dump_ns_) return;  // one dump per time
+  last_dump_ns_ = t_ns;
+  tfp_->dump(static_cast<uint64_t>(t_ns + 0.5));
+}
+
+void WaveRecorder::log_pixel(double t_ns, int x, int y) {
+  char line[64];
+  std::snprintf(line, sizeof line, "%.0f,%d,%d\n", t_ns, x, y);
+  pixel_log_ += line;
+}
+
+namespace {
+
+struct FstVar {
+  std::string scope, name;  // name as declared (a bus carries its range)
+  uint32_t width;
+};
+
+std::vector<FstVar> read_hierarchy(const std::string& path) {
+  void* ctx = fstReaderOpen(path.c_str());
+  if (!ctx) throw std::runtime_error("cannot read back the waveform " + path);
+  std::vector<FstVar> vars;
+  std::vector<std::string> scope;
+  fstReaderIterateHierRewind(ctx);
+  while (fstHier* h = fstReaderIterateHier(ctx)) {
+    if (h->htyp == FST_HT_SCOPE) scope.push_back(h->u.scope.name);
+    else if (h->htyp == FST_HT_UPSCOPE && !scope.empty()) scope.pop_back();
+    else if (h->htyp == FST_HT_VAR) {
+      std::string s;
+      for (const std::string& part : scope) s += (s.empty() ? "" : ".") + part;
+      vars.push_back({s, h->u.var.name, h->u.var.length});
+    }
+  }
+  fstReaderClose(ctx);
+  return vars;
+}
+
+// GTKWave's name for a variable: scope.name, a bus with its range.
+std::string gtkw_name(const FstVar& v) {
+  std::string n = v.name;
+  const size_t space = n.find(' ');
+  if (space != std::string::npos) n.erase(space, 1);  // "x [9:0]" -> "x[9:0]"
+  else if (v.width > 1) n += "[" + std::to_string(v.width - 1) + ":0]";
+  return v.scope + "." + n;
+}
+
+std::string base_name(const std::string& declared) { return declared.substr(0, declared.find(' ')); }
+
+// Signals grouped by stage: the SystemC stages in pipeline order, then the
+// RTL blocks. GTKWave flags: 0x800000 group begin, 0x1000000 group end,
+// 0x400000 closed, 0x200 blank; 28 = binary, 24 = decimal.
+std::string gtkw_text(const std::vector<FstVar>& vars, const std::vector<std::string>& stages,
+                      const std::string& dumpfile, double t0_ns) {
+  std::map<std::string, std::vector<const FstVar*>> by_scope;
+  for (const FstVar& v : vars) by_scope[v.scope].push_back(&v);
+  std::ostringstream o;
+  o << "[dumpfile] \"" << dumpfile << "\"\n[timestart] " << static_cast<uint64_t>(t0_ns) << "\n[size] 1600 1000\n"
+    << "[sst_width] 280\n[signals_width] 300\n";
+  auto group = [&](const std::string& title, const std::string& scope, bool open,
+                   const std::vector<std::string>& only) {
+    const auto it = by_scope.find(scope);
+    if (it == by_scope.end()) return;
+    std::vector<const FstVar*> chosen;
+    for (const FstVar* v : it->second)
+      if (only.empty() || std::find(only.begin(), only.end(), base_name(v->name)) != only.end()) chosen.push_back(v);
+    if (chosen.empty()) return;
+    o << (open ? "@800200\n" : "@c00200\n") << "-" << title << "\n";
+    for (const FstVar* v : chosen) o << (v->width > 1 ? "@24\n" : "@28\n") << gtkw_name(*v) << "\n";
+    o << (open ? "@1000200\n" : "@1401200\n") << "-" << title << "\n";
+  };
+  group("SystemC: frame", "pipeline", true, {});
+  for (const std::string& s : stages) group("SystemC: " + s, "pipeline." + s, s == "back_end", {});
+  group("RTL: back end ports", "TOP.girtd_backend", true,
+        {"clk_i", "in_valid_i", "in_ready_o", "clear_i", "flush_i", "swap_i", "idle_o", "front_o", "dda_state_o",
+         "dda_active_o", "pixel_push_o", "pixel_x_o", "pixel_y_o", "pixels_generated_o", "page_misses_o"});
+  group("RTL: DDA", "TOP.girtd_backend.u_dda", true, {});
+  group("RTL: DDA -> HAD FIFO", "TOP.girtd_backend.u_fifo", false, {});
+  group("RTL: HAD", "TOP.girtd_backend.u_had", false, {});
+  group("RTL: cache", "TOP.girtd_backend.u_had.u_cache", false, {});
+  group("RTL: VRAM (ports and state; the array is not traced)", "TOP.girtd_backend.u_vram", false, {});
+  return o.str();
+}
+
+void run_fst2vcd(const std::string& fst, const std::string& vcd) {
+  const std::string cmd = "fst2vcd -f '" + fst + "' -o '" + vcd + "' >/dev/null 2>&1";
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0 || !fs::exists(vcd))
+    throw InputError("--wave", 0, "writing VCD needs fst2vcd (Debian package gtkwave): install it or ask for .fst");
+}
+
+}  // namespace
+
+std::vector<std::string> WaveRecorder::finish() {
+  tfp_->close();
+  const std::vector<FstVar> vars = read_hierarchy(fst_tmp_);
+  for (const std::string& s : opt_.scopes) {
+    bool found = false;
+    for (const FstVar& v : vars) found = found || v.scope == s || v.scope.rfind(s + ".", 0) == 0;
+    if (!found) {
+      std::string known;
+      std::map<std::string, int> seen;
+      for (const FstVar& v : vars)
+        if (!seen[v.scope]++ && std::count(v.scope.begin(), v.scope.end(), '.') <= 2) known += " " + v.scope;
+      throw InputError("--wave-scope", 0, "'" + s + "' recorded nothing (scopes include:" + known + ")");
+    }
+  }
+  std::ofstream(pixels_tmp_) << pixel_log_;
+  const std::string stem = opt_.path.substr(0, opt_.path.size() - 4);
+  const std::string gtkw = stem + ".gtkw", pixels = stem + ".pixels.csv";
+  std::ofstream(gtkw + ".partial") << gtkw_text(vars, stage_names_, fs::absolute(opt_.path).string(), opt_.t0_ns);
+  if (opt_.vcd()) {
+    run_fst2vcd(fst_tmp_, opt_.path + ".partial");
+    fs::remove(fst_tmp_);
+    fs::rename(opt_.path + ".partial", opt_.path);
+  } else {
+    fs::rename(fst_tmp_, opt_.path);
+  }
+  fs::rename(gtkw + ".partial", gtkw);
+  fs::rename(pixels_tmp_, pixels);
+  finished_ = true;
+  return {opt_.path, gtkw, pixels};
+}
+
+}  // namespace girtd
