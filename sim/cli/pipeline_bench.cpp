@@ -48,8 +48,9 @@ std::string self_exe() {
 
 // One `girtd render` in a child process; its report, or null when it failed.
 nlohmann::json render_in_child(const std::string& input, const std::string& backend, const std::string& dir,
-                               const std::string& config) {
+                               const std::string& config, const std::vector<std::string>& extra = {}) {
   std::vector<std::string> args = {self_exe(), "render", input, "--backend", backend, "--out", dir, "--quiet"};
+  args.insert(args.end(), extra.begin(), extra.end());
   if (!config.empty()) args.insert(args.end(), {"--config", config});
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
@@ -137,6 +138,43 @@ PipelineBench run_pipeline_bench(const Params& params, const std::string& config
                   input.c_str(), static_cast<unsigned long long>(pixels), same_frame ? "yes" : "NO", counts ? "yes" : "NO",
                   rt * 1e3, at * 1e3, 100 * diff, time_ok ? "" : " (OVER 2 %)", rw, aw, aw > 0 ? rw / aw : 0.0,
                   clocks_per_s, rtl_ns_per_tick, bare_cells);
+    b.markdown += line;
+    std::fputs(line, stdout);
+    std::fflush(stdout);
+  }
+  return b;
+}
+
+WaveCostBench run_wave_cost_bench(const std::string& config, const std::string& out_dir) {
+  WaveCostBench b;
+  const std::string input = "traces/demo.trace";
+  b.markdown =
+      "\n## What waveforms cost (`" + input + "` on rtl, best of 3 runs each)\n\n"
+      "Without `--wave` the run uses the Verilated build without tracing; with it, the build with FST tracing "
+      "compiled in, dumping only inside the window.\n\n| run | wall s | against no --wave |\n|---|---|---|\n";
+  const std::string dir = out_dir + "/wave_cost";
+  struct Variant {
+    const char* what;
+    std::vector<std::string> args;
+  };
+  const Variant variants[] = {
+      {"no --wave", {}},
+      {"--wave, window after the run (traced build, no dump)", {"--wave", dir + "/late.fst", "--wave-window", "10s:11s"}},
+      {"--wave, a 100 us window", {"--wave", dir + "/short.fst", "--wave-window", "30ms:30.1ms"}},
+  };
+  double base = 0;
+  for (const Variant& v : variants) {
+    double best = 0;
+    for (int run = 0; run < 3; ++run) {
+      const nlohmann::json r = render_in_child(input, "rtl", dir + "/out", config, v.args);
+      if (r.is_null()) throw std::runtime_error(std::string("wave cost run failed: ") + v.what);
+      const double w = r.at("wall_s");
+      best = run == 0 ? w : std::min(best, w);
+    }
+    if (base == 0) base = best;
+    b.rows.push_back({{"run", v.what}, {"wall_s", best}, {"ratio", best / base}});
+    char line[256];
+    std::snprintf(line, sizeof line, "| %s | %.3f | %.3f |\n", v.what, best, best / base);
     b.markdown += line;
     std::fputs(line, stdout);
     std::fflush(stdout);

@@ -26,4 +26,13 @@ struct PipelineBench {
 // `config`: the --config file passed on to every render ("" for none).
 PipelineBench run_pipeline_bench(const Params& params, const std::string& config, const std::string& out_dir);
 
+// The cost of the waveform ability: the rtl back end on the demo trace
+// without --wave, with the traced build but nothing to dump, and with a
+// 100 us window (wall time, best of three, each in its own process).
+struct WaveCostBench {
+  std::string markdown;
+  nlohmann::json rows = nlohmann::json::array();
+};
+WaveCostBench run_wave_cost_bench(const std::string& config, const std::string& out_dir);
+
 }  // namespace girtd

@@ -110,6 +110,9 @@ void print_throughput(const nlohmann::json& r) {
 int run_render(const RenderArgs& a) {
   reject_unbuilt_options(a);
   const Params params = load_params(a.config);
+  std::optional<WaveOptions> wave;  // checked before the input is read
+  if (!a.wave.empty() || !a.wave_window.empty() || !a.wave_scopes.empty())
+    wave = parse_wave_options(a.wave, a.wave_window, a.wave_scopes, params.dda_clock_ns);
   const bool pipelined = is_pipeline_backend(a.backend);
   std::unique_ptr<Backend> backend;
   if (!pipelined) backend = make_backend(a.backend, params);
@@ -123,8 +126,7 @@ int run_render(const RenderArgs& a) {
   if (!a.dump.empty()) opt.dump = parse_dump(a.dump);
   opt.progress = isatty(STDERR_FILENO);
   if (input.polygons) opt.polygon_source = &*input.polygons;
-  if (!a.wave.empty() || !a.wave_window.empty() || !a.wave_scopes.empty())
-    opt.wave = parse_wave_options(a.wave, a.wave_window, a.wave_scopes, params.dda_clock_ns);
+  opt.wave = wave;
   RenderOutput out;
   if (pipelined) {
     const Trace* polygons = input.polygons ? &*input.polygons : nullptr;

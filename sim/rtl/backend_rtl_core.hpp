@@ -125,26 +125,12 @@ class BackendRtlCore final : public BackendRtlDriver {
   }
 
   void drain() override {
-    Model& t = *top_;
-    for (uint64_t guard = 0;; ++guard) {
-      t.clk_i = 0;
-      t.eval();
-      if (t.idle_o) return;
-      if (guard > (uint64_t{1} << 28)) throw std::logic_error("RTL back end did not go idle within 2^28 ticks (a deadlock)");
-      tick();
-    }
+    clock_until([](const Model& t) { return bool(t.idle_o); }, "the RTL back end did not go idle");
   }
 
   void step_until_ready() override {
-    Model& t = *top_;
-    t.in_valid_i = 0;
-    for (uint64_t guard = 0;; ++guard) {
-      t.clk_i = 0;
-      t.eval();
-      if (t.in_ready_o) return;
-      if (guard > (uint64_t{1} << 28)) throw std::logic_error("RTL DDA did not become ready within 2^28 ticks");
-      tick();
-    }
+    top_->in_valid_i = 0;
+    clock_until([](const Model& t) { return bool(t.in_ready_o); }, "the RTL DDA did not become ready");
   }
 
   void step_to(uint64_t target) override {
@@ -201,6 +187,19 @@ class BackendRtlCore final : public BackendRtlDriver {
   }
 
  private:
+  // Clocks until `done` holds with the clock low (before the next edge).
+  template <typename Done>
+  void clock_until(Done done, const char* what) {
+    Model& t = *top_;
+    for (uint64_t guard = 0;; ++guard) {
+      t.clk_i = 0;
+      t.eval();
+      if (done(t)) return;
+      if (guard > (uint64_t{1} << 28)) throw std::logic_error(std::string(what) + " within 2^28 ticks (a deadlock)");
+      tick();
+    }
+  }
+
   void tick() {
     Model& t = *top_;
     t.clk_i = 0;
