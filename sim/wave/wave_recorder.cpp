@@ -191,12 +191,18 @@ std::string gtkw_text(const std::vector<FstVar>& vars, const std::vector<std::st
     for (const FstVar* v : chosen) o << (v->width > 1 ? "@24\n" : "@28\n") << gtkw_name(*v) << "\n";
     o << (open ? "@1000200\n" : "@1401200\n") << "-" << title << "\n";
   };
+  // Open: the stages next to the back end and the DDA's handshakes, state
+  // and position; closed: the rest (a click away in GTKWave).
   group("SystemC: frame", "pipeline", true, {});
-  for (const std::string& s : stages) group("SystemC: " + s, "pipeline." + s, s == "back_end", {});
-  group("RTL: back end ports", "TOP.girtd_backend", true,
+  for (const std::string& s : stages)
+    group("SystemC: " + s, "pipeline." + s, s == "preparer" || s == "back_end", {});
+  group("RTL: back end ports", "TOP.girtd_backend", false,
         {"clk_i", "in_valid_i", "in_ready_o", "clear_i", "flush_i", "swap_i", "idle_o", "front_o", "dda_state_o",
          "dda_active_o", "pixel_push_o", "pixel_x_o", "pixel_y_o", "pixels_generated_o", "page_misses_o"});
-  group("RTL: DDA", "TOP.girtd_backend.u_dda", true, {});
+  group("RTL: DDA", "TOP.girtd_backend.u_dda", true,
+        {"in_valid_i", "in_ready_o", "out_valid_o", "out_ready_i", "out_x_o", "out_y_o", "out_z_o", "active_o",
+         "state_q", "emit", "stall", "x", "y", "y_past_end"});
+  group("RTL: DDA, every signal", "TOP.girtd_backend.u_dda", false, {});
   group("RTL: DDA -> HAD FIFO", "TOP.girtd_backend.u_fifo", false, {});
   group("RTL: HAD", "TOP.girtd_backend.u_had", false, {});
   group("RTL: cache", "TOP.girtd_backend.u_had.u_cache", false, {});

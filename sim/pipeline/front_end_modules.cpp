@@ -1,0 +1,138 @@
+// The pipeline's stage modules, by what the input is: polygons go through
+// the whole front end, triangles start at the window clip, DDA parameter
+// sets go straight to the back end. Each stage calls its models/ function
+// and charges its flops (models/timing/stage_costs).
+#include "common/triangle_setup.hpp"
+#include "pipeline/pipeline_elaboration.hpp"
+#include "timing/stage_costs.hpp"
+
+namespace girtd {
+
+void PipelineElaboration::build_from_polygons(const Trace& polygons) {
+  polygon_source_ = &polygons;
+  for (const TraceFrame& f : polygons.frames) {
+    polygon_ids_.emplace_back();
+    for (size_t i = 0; i < f.world.polygons.size(); ++i) polygon_ids_.back().push_back(i);
+  }
+  auto& src = source<size_t>(polygon_ids_);
+
+  FrontEndStages& lit = front_end_instance();
+  auto& lit_out = stage<size_t, FrontPolygon>(
+      "lighting", src,
+      [&lit](size_t, const size_t& i, Work<FrontPolygon>& w) {
+        const WorldFrame& f = lit.frame();
+        const size_t corners = f.polygons[i].p.size();
+        w.push_back({lighting_ops(corners, f.lights.directional.size(), f.cull_back_faces).flops(), lit.light(i)});
+      },
+      [this, &lit](size_t frame, Work<FrontPolygon>&) { begin(lit, frame); });
+
+  FrontEndStages& view = front_end_instance();
+  auto& view_out = stage<FrontPolygon, FrontPolygon>(
+      "view", lit_out,
+      [&view](size_t, const FrontPolygon& p, Work<FrontPolygon>& w) {
+        FrontPolygon q = p;
+        view.view(q);
+        w.push_back({view_ops(q.v.size()).flops(), std::move(q)});
+      },
+      [this, &view](size_t frame, Work<FrontPolygon>&) { begin(view, frame); });
+
+  FrontEndStages& clip = front_end_instance();
+  auto& clip_out = stage<FrontPolygon, FrontPolygon>(
+      "depth_clip", view_out,
+      [&clip](size_t, const FrontPolygon& p, Work<FrontPolygon>& w) {
+        std::optional<FrontPolygon> kept = clip.depth_clip(p);
+        size_t made = 0;
+        if (kept)
+          for (const CameraVertex& v : kept->v) made += v.created;
+        w.push_back({depth_clip_ops(p.v.size(), made).flops(), std::move(kept)});
+      },
+      [this, &clip](size_t frame, Work<FrontPolygon>&) { begin(clip, frame); });
+
+  // Projection holds the frame: Zmin and Zmax need every vertex first.
+  FrontEndStages& proj = front_end_instance();
+  auto& proj_out = stage<FrontPolygon, ScreenPolygon>(
+      "projection", clip_out,
+      [this, &proj](size_t, const FrontPolygon& p, Work<ScreenPolygon>&) {
+        proj.note_depths(p);
+        held_.push_back(p);
+      },
+      [this, &proj](size_t frame, Work<ScreenPolygon>&) {
+        begin(proj, frame);
+        held_.clear();
+      },
+      [this, &proj](size_t, Work<ScreenPolygon>& w) {
+        const DepthMap depth = proj.depth_map();
+        for (const FrontPolygon& p : held_) w.push_back({projection_ops(p.v.size()).flops(), proj.project(p, depth)});
+        held_.clear();
+      });
+
+  FrontEndStages& tri = front_end_instance();
+  auto& tri_out = stage<ScreenPolygon, SortableTriangle>(
+      "triangulator", proj_out,
+      [&tri](size_t, const ScreenPolygon& p, Work<SortableTriangle>& w) {
+        Triangulated t = tri.triangulate(p);
+        w.push_back({triangulator_ops(t.corners, t.method).flops(), std::nullopt});
+        for (SortableTriangle& st : t.triangles) w.push_back({0, std::move(st)});
+      },
+      [this, &tri](size_t frame, Work<SortableTriangle>&) { begin(tri, frame); });
+
+  FrontEndStages& sel = front_end_instance();
+  auto& sel_out = stage<SortableTriangle, SortableTriangle>(
+      "window_clip", tri_out,
+      [&sel](size_t, const SortableTriangle& t, Work<SortableTriangle>& w) {
+        std::optional<SortableTriangle> kept;
+        if (sel.window_select(t)) kept = t;
+        w.push_back({window_clip_ops().flops(), std::move(kept)});
+      },
+      [this, &sel](size_t frame, Work<SortableTriangle>&) { begin(sel, frame); });
+
+  // The depth sort holds the frame too.
+  FrontEndStages& sorter = front_end_instance();
+  auto& sort_out = stage<SortableTriangle, Triangle>(
+      "depth_sort", sel_out,
+      [this](size_t, const SortableTriangle& t, Work<Triangle>&) { to_sort_.push_back(t); },
+      [this, &sorter](size_t frame, Work<Triangle>&) {
+        begin(sorter, frame);
+        to_sort_.clear();
+      },
+      [this, &sorter](size_t, Work<Triangle>& w) {
+        const uint64_t before = sorter.counts().depth_sort_comparisons;
+        const std::vector<FrontTriangle> sorted = sorter.sort(to_sort_);
+        w.push_back({depth_sort_ops(to_sort_.size(), sorter.counts().depth_sort_comparisons - before).flops(),
+                     std::nullopt});
+        for (const FrontTriangle& t : sorted) w.push_back({0, t.tri});
+        to_sort_.clear();
+      });
+  build_back(preparer(sort_out));
+}
+
+void PipelineElaboration::begin(FrontEndStages& s, size_t frame) {
+  s.begin_frame(polygon_source_->frames[frame].world, settings_[frame].window);
+}
+
+void PipelineElaboration::build_from_triangles(const Trace& trace) {
+  for (const TraceFrame& f : trace.frames) triangles_.push_back(f.triangles);
+  auto& src = source<Triangle>(triangles_);
+  // The preparer makes the selection itself (and counts what it drops):
+  // this stage only spends the thesis' clip-stage time on every triangle.
+  auto& sel_out = stage<Triangle, Triangle>("window_clip", src, [](size_t, const Triangle& t, Work<Triangle>& w) {
+    w.push_back({window_clip_ops().flops(), t});
+  });
+  build_back(preparer(sel_out));
+}
+
+void PipelineElaboration::build_from_dda(const Trace& trace) {
+  for (const TraceFrame& f : trace.frames) dda_sets_.push_back(f.dda);
+  build_back(source<DdaParams>(dda_sets_));
+}
+
+sc_core::sc_fifo<Token<DdaParams>>& PipelineElaboration::preparer(sc_fifo<Token<Triangle>>& in) {
+  preparer_ = std::make_unique<DdaPreparer>(p_);
+  return stage<Triangle, DdaParams>("preparer", in, [this](size_t frame, const Triangle& t, Work<DdaParams>& w) {
+    std::optional<DdaParams> d(std::in_place);
+    if (preparer_->prepare(t, settings_[frame], *d) != PrepareResult::kReady) d.reset();
+    w.push_back({preparer_ops().flops(), std::move(d)});
+  });
+}
+
+}  // namespace girtd

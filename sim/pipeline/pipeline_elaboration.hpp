@@ -1,0 +1,138 @@
+// Everything one SystemC simulation of the pipeline elaborates: the FIFOs,
+// the stage modules (front_end_modules.cpp), the back end, the waveform
+// recorder, and what they measured (pipeline_stats.cpp). Internal to
+// sim/pipeline; pipeline.hpp is the interface.
+#pragma once
+
+#include <systemc>
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "backends/render_session.hpp"
+#include "dda/dda_preparer.hpp"
+#include "frontend/front_end_stages.hpp"
+#include "pipeline/back_end_engine.hpp"
+#include "pipeline/back_end_stage.hpp"
+#include "pipeline/source_stage.hpp"
+#include "pipeline/timed_stage.hpp"
+#include "wave/wave_recorder.hpp"
+
+namespace girtd {
+
+using sc_core::sc_fifo;
+
+class PipelineElaboration {
+ public:
+  PipelineElaboration(const std::string& backend, const Trace& trace, const Trace* polygons, const Params& p,
+                      const RenderOptions& opt);
+
+  RenderOutput run();
+
+ private:
+  template <typename T>
+  sc_fifo<Token<T>>& fifo(const std::string& name) {
+    auto f = std::make_unique<sc_fifo<Token<T>>>(name.c_str(), p_.pipeline_fifo_depth);
+    sc_fifo<Token<T>>& ref = *f;
+    owned_.push_back(std::shared_ptr<void>(f.release(), [](void* q) { delete static_cast<sc_fifo<Token<T>>*>(q); }));
+    return ref;
+  }
+
+  StageActivity& activity(const std::string& name) {
+    activities_.push_back(std::make_unique<StageActivity>());
+    activities_.back()->name = name;
+    return *activities_.back();
+  }
+
+  double rate(const std::string& stage) const { return p_.stage_rate_flops_per_s.at(stage); }
+
+  // A stage module between two FIFOs; `in` is read, a new FIFO is returned.
+  template <typename In, typename Out>
+  sc_fifo<Token<Out>>& stage(const std::string& name, sc_fifo<Token<In>>& in,
+                             typename TimedStage<In, Out>::ItemFn on_item,
+                             typename TimedStage<In, Out>::FrameFn on_begin = {},
+                             typename TimedStage<In, Out>::FrameFn on_end = {}) {
+    StageActivity& a = activity(name);
+    in_fifo_of_[&in] = &a;
+    sc_fifo<Token<Out>>& out = fifo<Out>(name + "_out");
+    auto m = std::make_unique<TimedStage<In, Out>>(name.c_str(), rate(name), std::move(on_item), std::move(on_begin),
+                                                   std::move(on_end), a, fifo_activity(in), fifo_activity(out));
+    m->in(in);
+    m->out(out);
+    modules_.push_back(std::move(m));
+    return out;
+  }
+
+  // The push side of a FIFO is recorded on its consumer's activity: the
+  // consumer is made after the producer, so keep a slot per FIFO.
+  template <typename T>
+  FifoActivity& fifo_activity(sc_fifo<Token<T>>& f) {
+    auto& slot = fifo_records_[&f];
+    if (!slot) slot = std::make_unique<FifoActivity>();
+    return *slot;
+  }
+
+  template <typename T>
+  sc_fifo<Token<T>>& source(const std::vector<std::vector<T>>& frames) {
+    sc_fifo<Token<T>>& out = fifo<T>("source_out");
+    auto m = std::make_unique<SourceStage<T>>("source", frames, fifo_activity(out));
+    m->out(out);
+    modules_.push_back(std::move(m));
+    return out;
+  }
+
+  // Per-stage copies of the front end's stage functions: stages run apart
+  // work on different frames at once. Their counts add up.
+  FrontEndStages& front_end_instance() {
+    fe_.push_back(std::make_unique<FrontEndStages>(ScreenMap{p_.screen_width, p_.screen_height}, p_.depth_max_mapped));
+    return *fe_.back();
+  }
+
+  // The modules an input needs (front_end_modules.cpp).
+  void build_from_polygons(const Trace& polygons);
+  void begin(FrontEndStages& s, size_t frame);  // a stage's instance starts a frame
+  void build_from_triangles(const Trace& trace);
+  void build_from_dda(const Trace& trace);
+  sc_fifo<Token<DdaParams>>& preparer(sc_fifo<Token<Triangle>>& in);
+  void build_back(sc_fifo<Token<DdaParams>>& in);
+
+  // Per stage and whole-pipeline figures (pipeline_stats.cpp).
+  void collect(RunStats& s) const;
+
+  // Every stage's activity and its input FIFO, in pipeline order, then the
+  // RTL, into one FST.
+  void start_wave(const WaveOptions& w);
+
+  const Params& p_;
+  const RenderOptions& opt_;
+  std::unique_ptr<BackEndEngine> engine_;
+  std::string backend_;
+  std::vector<FrameSettings> settings_;
+  const Trace* polygon_source_ = nullptr;
+  std::vector<std::vector<size_t>> polygon_ids_;
+  std::vector<std::vector<Triangle>> triangles_;
+  std::vector<std::vector<DdaParams>> dda_sets_;
+  std::vector<std::unique_ptr<FrontEndStages>> fe_;
+  std::vector<FrontPolygon> held_;
+  std::vector<SortableTriangle> to_sort_;
+  std::unique_ptr<DdaPreparer> preparer_;
+  std::vector<std::shared_ptr<void>> owned_;
+  std::vector<std::unique_ptr<sc_core::sc_module>> modules_;
+  std::unique_ptr<BackEndStage> back_end_;
+  std::vector<std::unique_ptr<StageActivity>> activities_;
+  std::map<const void*, StageActivity*> in_fifo_of_;
+  std::map<const void*, std::unique_ptr<FifoActivity>> fifo_records_;
+  StageActivity* back_activity_ = nullptr;
+  mutable uint64_t back_fifo_max_ = 0;
+  std::vector<RgbImage> per_frame_;
+  std::chrono::steady_clock::time_point wall0_;
+  bool progress_printed_ = false;
+  std::unique_ptr<WaveRecorder> wave_;
+  uint64_t total_items_ = 0;
+};
+
+}  // namespace girtd

@@ -1,0 +1,88 @@
+// What the run measured, per stage and for the whole pipeline (the report's
+// throughput keys, sim/README.md).
+#include "pipeline/pipeline_elaboration.hpp"
+#include "timing/stage_costs.hpp"
+
+namespace girtd {
+
+void PipelineElaboration::collect(RunStats& s) const {
+  const BackEndResult be = engine_->result();
+  const double tick_s = p_.base_tick_ns * 1e-9;
+  const double modeled = double(back_end_->end_tick()) * tick_s;
+  s.triangles_in = back_activity_->items;
+  s.triangles_drawn = be.triangles_drawn;
+  s.pixels_generated = be.pixels_generated;
+  s.had = be.had;
+  s.dda = be.dda;
+  s.frames = settings_.size();
+  if (preparer_) s.preparer = preparer_->counts();
+  if (polygon_source_) {
+    FrontendCounts total;
+    for (const auto& fe : fe_) total += fe->counts();
+    s.frontend = total;
+  }
+  uint64_t prepared = 0;
+  for (const auto& a : activities_) {
+    if (a.get() == back_activity_) continue;
+    if (a->name == "preparer") {
+      s.triangles_in = a->items;
+      prepared = a->emitted;
+    }
+    StageStats st;
+    st.name = a->name;
+    st.items = a->items;
+    st.busy_s = a->busy_s;
+    st.starved_s = a->starved_s;
+    st.blocked_s = a->blocked_s;
+    st.stall_s = a->starved_s + a->blocked_s;
+    st.flops = a->flops;
+    s.stages.push_back(st);
+  }
+  // FIFO occupancy: each record belongs to the stage reading that FIFO.
+  for (const auto& [fifo, reader] : in_fifo_of_) {
+    const auto rec = fifo_records_.find(fifo);
+    if (rec == fifo_records_.end()) continue;
+    for (StageStats& st : s.stages)
+      if (st.name == reader->name) st.fifo_in_max = rec->second->max_occupancy;
+    if (reader == back_activity_) back_fifo_max_ = rec->second->max_occupancy;
+  }
+  const double clock_s = p_.dda_clock_ns * 1e-9;
+  StageStats dda;
+  dda.name = "dda";
+  dda.items = be.triangles_drawn;
+  dda.busy_s = double(be.dda.cycles) * clock_s;
+  dda.starved_s = back_activity_->starved_s;
+  dda.blocked_s = double(be.dda_wait_ticks) * tick_s;
+  dda.stall_s = *dda.starved_s + *dda.blocked_s;
+  dda.fifo_in_max = back_fifo_max_;
+  s.stages.push_back(dda);
+  StageStats had;
+  had.name = "had";
+  had.items = be.pixels_generated;
+  had.busy_s = double(be.had_busy_ticks) * tick_s;
+  had.starved_s = modeled - *had.busy_s;
+  had.blocked_s = 0.0;
+  had.stall_s = *had.starved_s;
+  had.fifo_in_max = be.fifo_max;
+  s.stages.push_back(had);
+
+  PipelineTiming t;
+  t.modeled_s = modeled;
+  double most = -1;
+  for (const StageStats& st : s.stages)
+    if (st.busy_s && *st.busy_s > most) {
+      most = *st.busy_s;
+      t.bottleneck = st.name;
+    }
+  t.cache_accesses = be.pixels_generated;
+  t.page_misses = be.page_misses;
+  t.dda_busy_s = *dda.busy_s;
+  t.dda_fifo_full_s = *dda.blocked_s;
+  t.dda_starved_s = *dda.starved_s;
+  t.had_page_wait_s = double(be.had_vram_wait_ticks) * tick_s;
+  t.preparer_triangles = preparer_ ? prepared : 0;
+  if (preparer_) t.preparer_capacity_triangles_per_s = rate("preparer") / preparer_ops().flops();
+  s.timing = t;
+}
+
+}  // namespace girtd
