@@ -109,6 +109,9 @@ Params build(const json& j, const std::string& origin) {
     p.stage_flops_per_s = j.at("targets").at("stage_flops_per_s").get<double>();
     p.target_preparer_triangles_per_s = j.at("targets").at("preparer_triangles_per_s").get<double>();
     p.pipeline_fifo_depth = j.at("pipeline").at("fifo_depth").get<int>();
+    const std::string sync = j.at("pipeline").at("rtl_sync").get<std::string>();
+    if (sync != "token" && sync != "tick") throw InputError(origin, 0, "pipeline.rtl_sync must be \"token\" or \"tick\"");
+    p.pipeline_rtl_sync_every_tick = sync == "tick";
     for (const auto& [stage, rate] : j.at("pipeline").at("flops_per_s").items())
       p.stage_rate_flops_per_s[stage] = rate.get<double>();
   } catch (const json::exception& e) {

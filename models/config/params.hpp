@@ -66,6 +66,10 @@ struct Params {
   // The timed pipeline (sim/pipeline): a FIFO of this many items between
   // every pair of stages; each front-end stage's arithmetic rate, flop/s.
   int pipeline_fifo_depth;
+  // How the Verilated back end keeps step with SystemC time: "token" (only
+  // when a token changes hands; it runs ahead in between) or "tick" (every
+  // base tick, for measuring what that costs).
+  bool pipeline_rtl_sync_every_tick;
   std::map<std::string, double> stage_rate_flops_per_s;
 
   double target_mpixels_per_s;

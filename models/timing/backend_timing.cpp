@@ -122,7 +122,10 @@ void BackendTimingModel::begin_frame() {
 
 void BackendTimingModel::end_frame() {
   drain();
-  if (cache_valid_) t_.ticks += 2 + vram_;  // flush request and write-back
+  if (cache_valid_) {
+    t_.ticks += 2 + vram_;  // flush request and write-back
+    t_.had_busy_ticks += vram_;  // the HAD's FLUSH state, as the RTL counts it
+  }
   cache_valid_ = false;
   t_.ticks += 1;  // swap
   dda_at_ = had_free_ = t_.ticks;

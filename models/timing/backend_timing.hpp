@@ -45,11 +45,15 @@ class BackendTimingModel {
   void begin_frame();  // the serial-port clear; the cache starts empty
   // One triangle: its DDA clock count and its pixels in emission order;
   // or the same as a stream (begin, each pixel as the DDA emits it, end).
+  // A pixel is pushed on the clock it leaves the DDA (its `cycle`); one
+  // leaving after the triangle's last clock (an output latency of 3 or more)
+  // holds the DDA until it is pushed.
   void triangle(uint64_t dda_cycles, const std::vector<TimedPixel>& pixels);
   void begin_triangle();
   void pixel(const TimedPixel& p);
   void end_triangle(uint64_t dda_cycles);
   void end_frame();    // drain, write the cache page back, swap
+  void drain();        // until the DDA and the HAD are idle
 
   const BackendTiming& timing() const { return t_; }
   // The tick the DDA can take its next parameter set (its first enabled
@@ -63,7 +67,6 @@ class BackendTimingModel {
   void push(const TimedPixel& p, uint64_t tick);
   uint64_t fifo_count_at(uint64_t tick) const;  // pushed before `tick` and not popped before it
   uint64_t wait_for_room(uint64_t at);            // the first DDA tick from `at` with room in the FIFO
-  void drain();
 
   int period_, access_, blend_, vram_, limit_;
   uint64_t clear_ticks_;

@@ -43,6 +43,7 @@ struct PipelineTiming {
   double dda_fifo_full_s = 0;       // DDA waiting on a full DDA -> HAD FIFO
   double dda_starved_s = 0;         // DDA idle, no parameter set (the front end starving it)
   double had_page_wait_s = 0;       // HAD waiting on page write-backs and fetches
+  double frame_clear_swap_s = 0;    // clearing frames; writing the cache back and swapping at their ends
   uint64_t preparer_triangles = 0;  // parameter sets the preparer delivered
   double preparer_capacity_triangles_per_s = 0;  // its rate over its flops per triangle
 };

@@ -92,9 +92,9 @@ void print_throughput(const nlohmann::json& r) {
               r["target_mpixels_per_s"].get<double>(), t, r["back_end_mpixels_per_s"].get<double>());
   const std::string bottleneck = r["bottleneck"];
   std::printf("  time       bottleneck %s (busy %.1f %%); DDA busy %.1f %%, on a full FIFO %.1f %%, starved by the "
-              "front end %.1f %%; HAD on page swaps %.1f %%\n",
+              "front end %.1f %%; HAD on page swaps %.1f %%; frame clear and swap %.1f %%\n",
               bottleneck.c_str(), 100.0 * r["stages"][bottleneck]["utilization"].get<double>(), pct("dda_busy_s"),
-              pct("dda_fifo_full_s"), pct("dda_starved_s"), pct("had_page_wait_s"));
+              pct("dda_fifo_full_s"), pct("dda_starved_s"), pct("had_page_wait_s"), pct("frame_clear_swap_s"));
   std::printf("  cache      %llu accesses, %llu page misses, nac %.2f\n",
               static_cast<unsigned long long>(r["cache"]["accesses"].get<uint64_t>()),
               static_cast<unsigned long long>(r["cache"]["page_misses"].get<uint64_t>()),
@@ -105,6 +105,19 @@ void print_throughput(const nlohmann::json& r) {
                 r["target_preparer_triangles_per_s"].get<double>());
 }
 
+// Outputs are written only after the run: find out before it whether they
+// can be (an existing file where a directory must go is bad usage).
+void check_output_dir(const std::string& dir, const char* option) {
+  for (fs::path p = fs::absolute(dir.empty() ? "." : dir); !p.empty(); p = p.parent_path()) {
+    std::error_code ec;
+    if (fs::exists(p, ec)) {
+      if (!fs::is_directory(p, ec)) throw InputError(option, 0, "'" + p.string() + "' is a file, not a directory");
+      return;
+    }
+    if (p == p.parent_path()) return;
+  }
+}
+
 }  // namespace
 
 int run_render(const RenderArgs& a) {
@@ -112,12 +125,15 @@ int run_render(const RenderArgs& a) {
   const Params params = load_params(a.config);
   std::optional<WaveOptions> wave;  // checked before the input is read
   if (!a.wave.empty() || !a.wave_window.empty() || !a.wave_scopes.empty())
-    wave = parse_wave_options(a.wave, a.wave_window, a.wave_scopes, params.dda_clock_ns);
+    wave = parse_wave_options(a.wave, a.wave_window, a.wave_scopes, params.dda_clock_ns, params.base_tick_ns);
   const bool pipelined = is_pipeline_backend(a.backend);
   std::unique_ptr<Backend> backend;
   if (!pipelined) backend = make_backend(a.backend, params);
   if (a.aa && !is_hardware_q(*a.aa) && a.backend != "reference")
     throw InputError("--aa", 0, "Q must be 0 or a power of two 1/16..8 for the hardware back ends");
+  const std::string dir = a.out_dir.empty() ? "out/" + fs::path(a.input).stem().string() : a.out_dir;
+  check_output_dir(dir, "--out");
+  if (wave) check_output_dir(fs::path(wave->path).parent_path().string(), "--wave");
   const LoadedInput input = load_input(a, params);
   const Trace& trace = input.trace;
 
@@ -145,7 +161,6 @@ int run_render(const RenderArgs& a) {
   ctx.image_sha256 = sha256_hex(out.shown.rgb);
   const nlohmann::json report = make_report(ctx, out.stats, params);
 
-  const std::string dir = a.out_dir.empty() ? "out/" + fs::path(a.input).stem().string() : a.out_dir;
   OutputSet files(dir);
   files.add("frame.png", [&](const std::string& p) { write_png_rgb(p, out.shown); });
   for (size_t i = 0; i < out.per_frame.size(); ++i) {

@@ -42,7 +42,8 @@ void add_timing(json& r, const RunStats& s, const Params& params) {
   r["time_split"] = json{{"dda_busy_s", t.dda_busy_s},
                          {"dda_fifo_full_s", t.dda_fifo_full_s},
                          {"dda_starved_s", t.dda_starved_s},
-                         {"had_page_wait_s", t.had_page_wait_s}};
+                         {"had_page_wait_s", t.had_page_wait_s},
+                         {"frame_clear_swap_s", t.frame_clear_swap_s}};
   if (s.preparer) {
     r["preparer_triangles_per_s"] = per_s(double(t.preparer_triangles), t.modeled_s);
     r["preparer_capacity_triangles_per_s"] = t.preparer_capacity_triangles_per_s;

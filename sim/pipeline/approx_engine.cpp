@@ -33,6 +33,7 @@ class ApproxEngine : public BackEndEngine {
     ++r_.triangles_drawn;
     r_.pixels_generated += st.emitted;
   }
+  void drain() override { timing_.drain(); }
   void end_frame() override {
     timing_.end_frame();
     fb_.swap();

@@ -45,6 +45,7 @@ class BackEndEngine {
   virtual void idle_until(uint64_t tick) = 0;
   virtual void begin_frame(const FrameSettings& s) = 0;  // clear
   virtual void draw(const DdaParams& d) = 0;
+  virtual void drain() = 0;      // until the DDA, FIFO and HAD are idle
   virtual void end_frame() = 0;  // drain, write the cache back, swap
   virtual uint64_t now_tick() const = 0;
   virtual BackEndResult result() const = 0;

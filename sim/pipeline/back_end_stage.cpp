@@ -37,7 +37,8 @@ void BackEndStage::sync_to_ns(double t_ns) {
 void BackEndStage::on_tick(const BackendRtl::TickProbe& p) {
   const double edge_ns = double(p.tick) * tick_ns_;
   const double t_ns = p.rising ? edge_ns : edge_ns - std::floor(tick_ns_ / 2);
-  if (!wave_->wants(t_ns)) return;
+  if (lockstep_ && p.rising) sync_to_ns(edge_ns);
+  if (!wave_ || !wave_->wants(t_ns)) return;
   sync_to_ns(t_ns);
   if (!p.rising && p.pixel_push) wave_->log_pixel(edge_ns, p.pixel_x, p.pixel_y);
   wave_->set_frame(static_cast<uint32_t>(frame_));
@@ -58,12 +59,14 @@ Token<DdaParams> BackEndStage::next_token() {
       engine_.idle_until(tick_of(sc_time_stamp()));
       break;
     }
-    if (now_ns + tick_ns_ < wave_->window_start_ns()) {
-      wait(sc_time(wave_->window_start_ns(), sc_core::SC_NS) - sc_time_stamp(), in.data_written_event());
-      engine_.idle_until(tick_of(sc_time_stamp()));
-    } else {
-      engine_.idle_until(engine_.now_tick() + 1);  // the tick hook waits for SystemC time
-    }
+    // Until the window opens, or inside it until the next tick: SystemC
+    // time moves on whether or not a token comes, and the RTL follows it
+    // (the tick hook dumps each tick).
+    const sc_time until = now_ns + tick_ns_ < wave_->window_start_ns()
+                              ? sc_time(wave_->window_start_ns(), sc_core::SC_NS)
+                              : at(tick_of(sc_time_stamp()) + 1);
+    wait(until - sc_time_stamp(), in.data_written_event());
+    engine_.idle_until(tick_of(sc_time_stamp()));
     if (in.nb_read(tok)) break;
   }
   a_.starved_s += (sc_time_stamp() - t0).to_seconds();
@@ -72,7 +75,7 @@ Token<DdaParams> BackEndStage::next_token() {
 }
 
 void BackEndStage::run() {
-  if (wave_) engine_.rtl()->on_tick([this](const BackendRtl::TickProbe& p) { on_tick(p); });
+  if (wave_ || lockstep_) engine_.rtl()->on_tick([this](const BackendRtl::TickProbe& p) { on_tick(p); });
   uint64_t triangles = 0;
   a_.state = StageState::kBusy;
   for (;;) {
@@ -83,7 +86,10 @@ void BackEndStage::run() {
     frame_ = tok.frame;
     switch (tok.kind) {
       case TokenKind::kFrameBegin:
+        engine_.drain();
+        frame_work_from_ = engine_.now_tick();
         engine_.begin_frame(frames_.at(tok.frame));
+        frame_ticks_ += engine_.now_tick() - frame_work_from_;
         break;
       case TokenKind::kItem:
         ++a_.items;
@@ -91,7 +97,10 @@ void BackEndStage::run() {
         if (progress_ && (++triangles & 15) == 0) progress_(tok.frame, triangles, at(engine_.now_tick()).to_seconds());
         break;
       case TokenKind::kFrameEnd:
+        engine_.drain();
+        frame_work_from_ = engine_.now_tick();
         engine_.end_frame();
+        frame_ticks_ += engine_.now_tick() - frame_work_from_;
         if (frame_done_) frame_done_(tok.frame);
         break;
       case TokenKind::kEnd:

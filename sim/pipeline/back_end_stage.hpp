@@ -38,7 +38,12 @@ class BackEndStage : public sc_core::sc_module {
   // Record a waveform: every tick in the window is dumped once SystemC
   // time has reached it (the engine must be rtl).
   void record(WaveRecorder* rec) { wave_ = rec; }
+  // Bring SystemC time level with the RTL at every tick (pipeline.rtl_sync).
+  void sync_every_tick(bool on) { lockstep_ = on; }
   uint64_t end_tick() const { return end_tick_; }  // the last frame's swap
+  // Ticks spent clearing frames and, at their ends, writing the cache back
+  // and swapping (not drawing).
+  uint64_t frame_ticks() const { return frame_ticks_; }
 
  private:
   void run();
@@ -57,9 +62,11 @@ class BackEndStage : public sc_core::sc_module {
   FrameDone frame_done_;
   Progress progress_;
   WaveRecorder* wave_ = nullptr;
+  bool lockstep_ = false;
   size_t frame_ = 0;
   bool finished_ = false;
   uint64_t end_tick_ = 0;
+  uint64_t frame_ticks_ = 0, frame_work_from_ = 0;
 };
 
 }  // namespace girtd

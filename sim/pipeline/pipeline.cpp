@@ -59,7 +59,7 @@ RenderOutput PipelineElaboration::run() {
   collect(out.stats);
   out.shown = engine_->shown();
   out.z = engine_->z_plane();
-  if (wave_) out.wave_files = wave_->finish();
+  if (wave_) out.wave_files = wave_->finish(double(back_end_->end_tick()) * p_.base_tick_ns);
   out.stats.wall_s = wall;  // the simulation (the frame read-out after it is not counted)
   return out;
 }
@@ -84,6 +84,7 @@ void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
   back_end_ = std::make_unique<BackEndStage>("back_end", *engine_, settings_, p_.base_tick_ns, a, fifo_activity(in),
                                              std::move(done), std::move(progress));
   back_end_->in(in);
+  if (p_.pipeline_rtl_sync_every_tick && engine_->rtl()) back_end_->sync_every_tick(true);
 }
 
 void PipelineElaboration::start_wave(const WaveOptions& w) {

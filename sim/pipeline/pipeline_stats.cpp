@@ -80,6 +80,7 @@ void PipelineElaboration::collect(RunStats& s) const {
   t.dda_fifo_full_s = *dda.blocked_s;
   t.dda_starved_s = *dda.starved_s;
   t.had_page_wait_s = double(be.had_vram_wait_ticks) * tick_s;
+  t.frame_clear_swap_s = double(back_end_->frame_ticks()) * tick_s;
   t.preparer_triangles = preparer_ ? prepared : 0;
   if (preparer_) t.preparer_capacity_triangles_per_s = rate("preparer") / preparer_ops().flops();
   s.timing = t;

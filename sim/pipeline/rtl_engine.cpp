@@ -21,6 +21,7 @@ class RtlEngine : public BackEndEngine {
     rtl_.draw(d);
     ++triangles_;
   }
+  void drain() override { rtl_.drain(); }
   void end_frame() override { rtl_.end_frame(); }
   uint64_t now_tick() const override { return rtl_.ticks(); }
   BackEndResult result() const override {

@@ -26,7 +26,7 @@ struct StageActivity {
   uint64_t emitted = 0;  // items handed on
   double flops = 0;      // arithmetic done (front-end stages and preparer)
   double busy_s = 0;     // computing
-  double starved_s = 0;  // waiting for an item (after the first one arrived)
+  double starved_s = 0;  // waiting for an item (from time 0: the pipeline's fill counts)
   double blocked_s = 0;  // waiting for room in the next FIFO
 };
 

@@ -8,6 +8,8 @@
 namespace girtd {
 namespace {
 
+constexpr double kMaxTimeNs = 1e15;
+
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
@@ -19,12 +21,15 @@ double parse_time(const std::string& text, double dda_clock_ns) {
   if (end == begin || !std::isfinite(v) || v < 0)
     throw InputError("--wave-window", 0, "'" + text + "' is not a time (a number >= 0 with ns, us, ms, s or cycles)");
   const std::string unit(end);
-  if (unit.empty() || unit == "ns") return v;
-  if (unit == "us") return v * 1e3;
-  if (unit == "ms") return v * 1e6;
-  if (unit == "s") return v * 1e9;
-  if (unit == "cycles" || unit == "c") return v * dda_clock_ns;
-  throw InputError("--wave-window", 0, "unknown unit '" + unit + "' in '" + text + "' (ns, us, ms, s or cycles)");
+  double ns;
+  if (unit.empty() || unit == "ns") ns = v;
+  else if (unit == "us") ns = v * 1e3;
+  else if (unit == "ms") ns = v * 1e6;
+  else if (unit == "s") ns = v * 1e9;
+  else if (unit == "cycles" || unit == "c") ns = v * dda_clock_ns;
+  else throw InputError("--wave-window", 0, "unknown unit '" + unit + "' in '" + text + "' (ns, us, ms, s or cycles)");
+  if (ns > kMaxTimeNs) throw InputError("--wave-window", 0, "'" + text + "' is beyond 10^15 ns");
+  return ns;
 }
 
 }  // namespace
@@ -32,13 +37,15 @@ double parse_time(const std::string& text, double dda_clock_ns) {
 bool WaveOptions::vcd() const { return ends_with(path, ".vcd"); }
 
 WaveOptions parse_wave_options(const std::string& path, const std::string& window,
-                               const std::vector<std::string>& scopes, double dda_clock_ns) {
+                               const std::vector<std::string>& scopes, double dda_clock_ns, double base_tick_ns) {
   if (path.empty()) {
     if (!window.empty()) throw InputError("--wave-window", 0, "needs --wave FILE");
     if (!scopes.empty()) throw InputError("--wave-scope", 0, "needs --wave FILE");
   }
   WaveOptions w;
   w.path = path;
+  if (base_tick_ns < 2 || base_tick_ns != std::floor(base_tick_ns))
+    throw InputError("--wave", 0, "waveforms need timing.base_tick_ns to be a whole number of ns, at least 2");
   if (!ends_with(path, ".fst") && !ends_with(path, ".vcd"))
     throw InputError("--wave", 0, "'" + path + "': the waveform file must end in .fst or .vcd");
   if (!window.empty()) {

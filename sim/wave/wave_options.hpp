@@ -16,9 +16,10 @@ struct WaveOptions {
 };
 
 // Times are numbers with a unit: ns (the default), us, ms, s, or cycles (DDA
-// clocks of `dda_clock_ns`); T1 may be left empty (to the end). Bad values
-// are InputErrors naming the option.
+// clocks of `dda_clock_ns`), at most 10^15 ns; T1 may be left empty (to the
+// end). The base tick must be a whole number of ns, at least 2 (the clock is
+// drawn low, then high, within it). Bad values are InputErrors naming the option.
 WaveOptions parse_wave_options(const std::string& path, const std::string& window,
-                               const std::vector<std::string>& scopes, double dda_clock_ns);
+                               const std::vector<std::string>& scopes, double dda_clock_ns, double base_tick_ns);
 
 }  // namespace girtd

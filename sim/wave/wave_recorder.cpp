@@ -7,7 +7,9 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <fcntl.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "common/input_error.hpp"
 #include "gtkwave/fstapi.h"
@@ -115,7 +117,9 @@ void WaveRecorder::open() {
     for (const std::string& s : opt_.scopes) tfp_->dumpvars(99, s);
   }
   tfp_->set_time_resolution("1ns");
-  fs::create_directories(fs::absolute(opt_.path).parent_path());
+  std::error_code ec;
+  fs::create_directories(fs::absolute(opt_.path).parent_path(), ec);
+  if (ec) throw InputError(opt_.path, 0, "cannot make the waveform's directory: " + ec.message());
   tfp_->open(fst_tmp_.c_str());
   if (!tfp_->isOpen()) throw InputError(opt_.path, 0, "cannot write the waveform file");
 }
@@ -210,17 +214,38 @@ std::string gtkw_text(const std::vector<FstVar>& vars, const std::vector<std::st
   return o.str();
 }
 
+// fst2vcd (Debian gtkwave), run without a shell.
 void run_fst2vcd(const std::string& fst, const std::string& vcd) {
-  const std::string cmd = "fst2vcd -f '" + fst + "' -o '" + vcd + "' >/dev/null 2>&1";
-  const int rc = std::system(cmd.c_str());
-  if (rc != 0 || !fs::exists(vcd))
+  std::vector<std::string> args = {"fst2vcd", "-f", fst, "-o", vcd};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::fflush(stdout);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (null >= 0) {
+      dup2(null, 1);
+      dup2(null, 2);
+    }
+    execvp(argv[0], argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0 || !fs::exists(vcd))
     throw InputError("--wave", 0, "writing VCD needs fst2vcd (Debian package gtkwave): install it or ask for .fst");
 }
 
 }  // namespace
 
-std::vector<std::string> WaveRecorder::finish() {
+std::vector<std::string> WaveRecorder::finish(double run_end_ns) {
   tfp_->close();
+  if (last_dump_ns_ < 0) {
+    char what[160];
+    std::snprintf(what, sizeof what, "the window %.0f..%.0f ns recorded nothing: the run ended at %.0f ns",
+                  opt_.t0_ns, std::min(opt_.t1_ns, 1e15), run_end_ns);
+    throw InputError("--wave-window", 0, what);
+  }
   const std::vector<FstVar> vars = read_hierarchy(fst_tmp_);
   for (const std::string& s : opt_.scopes) {
     bool found = false;

@@ -43,10 +43,10 @@ class WaveRecorder {
   void dump(double t_ns);
   void log_pixel(double t_ns, int x, int y);
 
-  // Closes the file, checks that every --wave-scope recorded something
-  // (InputError if not), writes the .gtkw and the .vcd if asked, and moves
-  // every file into place. Returns their paths.
-  std::vector<std::string> finish();
+  // Closes the file, checks that the window and every --wave-scope
+  // recorded something (InputError if not), writes the .gtkw and the .vcd
+  // if asked, and moves every file into place. Returns their paths.
+  std::vector<std::string> finish(double run_end_ns);
 
  private:
   struct StageProbe;

@@ -56,7 +56,20 @@ grep -q "u_had\|pipeline.preparer" "$TMP/snames" && bad "signals outside the sco
 read -r first last < <($Q "$TMP/s/w.vcd" times)
 [[ $first -ge 35000 && $last -le 42000 ]] && ok || bad "cycles window: $first..$last outside 35000..42000 ns"
 
-# 4. Refusals: exit 2, one line, nothing written.
+# 4. Recording changes nothing: the same modeled time and counts with and
+#    without a waveform, also when the window ends while the DDA waits for
+#    the front end (cube.obj's DDA is starved at 110 us).
+for input in traces/directed/nf_rows.dda traces/models/cube.obj; do
+  "$GIRTD" render $input --backend rtl --out "$TMP/n0" --quiet
+  timeout 120 "$GIRTD" render $input --backend rtl --out "$TMP/n1" --wave "$TMP/n1.fst" --wave-window 0:110us --quiet \
+    && ok || bad "$input: --wave run failed or hung"
+  for k in modeled_time_s pixels_generated dda_cycles time_split image_sha256; do
+    [[ $(jq -c .$k "$TMP/n0/report.json") == $(jq -c .$k "$TMP/n1/report.json") ]] && ok \
+      || bad "$input: --wave changed $k: $(jq -c .$k "$TMP/n0/report.json") vs $(jq -c .$k "$TMP/n1/report.json")"
+  done
+done
+
+# 5. Refusals: exit 2, one line, nothing written.
 "$GIRTD" render traces/equilateral_200.trace --backend rtl --out "$TMP/b1" --wave "$TMP/b1.fst" \
   --wave-scope TOP.no_such_block 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 && $(wc -l < "$TMP/err") -eq 1 && ! -e "$TMP/b1.fst" && ! -e "$TMP/b1" ]] && ok \
@@ -71,5 +84,14 @@ for w in "5:2" "abc:10" "10parsecs:20"; do
 done
 "$GIRTD" render traces/equilateral_200.trace --backend rtl --wave "$TMP/b4.png" --out "$TMP/b4" 2> /dev/null; rc=$?
 [[ $rc -eq 2 ]] && ok || bad "wave file .png accepted"
+"$GIRTD" render traces/equilateral_200.trace --backend rtl --wave "$TMP/b5.fst" --wave-window 1s: --out "$TMP/b5" \
+  2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/b5.fst" && ! -e "$TMP/b5" ]] && grep -q "recorded nothing" "$TMP/err" && ok \
+  || bad "window after the run: exit $rc"
+touch "$TMP/afile"
+"$GIRTD" render traces/equilateral_200.trace --backend rtl --wave "$TMP/afile/w.fst" --out "$TMP/b6" 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/b6" ]] && ok || bad "waveform under a file: exit $rc"
+"$GIRTD" render traces/equilateral_200.trace --backend rtl --wave "$TMP/b7.fst" --out "$TMP/afile/o" 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/b7.fst" ]] && ok || bad "output under a file: exit $rc, waveform left: $(ls "$TMP" | grep b7)"
 
 finish
