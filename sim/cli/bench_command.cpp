@@ -131,7 +131,7 @@ int run_bench(const std::string& config, const std::string& out_dir, bool pipeli
   md += md2;
   const PipelineBench pb = run_pipeline_bench(params, config, out_dir);
   md += pb.markdown;
-  const WaveCostBench wb = run_wave_cost_bench(config, out_dir);
+  const WaveCostBench wb = run_wave_cost_bench(params, config, out_dir);
   md += wb.markdown;
   OutputSet files(out_dir);
   files.add_text("bench.json", nlohmann::json{{"rows", rows},

@@ -26,13 +26,14 @@ struct PipelineBench {
 // `config`: the --config file passed on to every render ("" for none).
 PipelineBench run_pipeline_bench(const Params& params, const std::string& config, const std::string& out_dir);
 
-// The cost of the waveform ability: the rtl back end on the demo trace
-// without --wave, with the traced build but nothing to dump, and with a
-// 100 us window (wall time, best of three, each in its own process).
+// The cost of the coupling and of the waveform ability, on the demo trace:
+// rtl in the pipeline, the bare Verilated harness, the pipeline keeping step
+// every tick, the traced build with almost nothing to dump, a 100 us window
+// (wall time per simulated tick, best of three, each render in its own process).
 struct WaveCostBench {
   std::string markdown;
   nlohmann::json rows = nlohmann::json::array();
 };
-WaveCostBench run_wave_cost_bench(const std::string& config, const std::string& out_dir);
+WaveCostBench run_wave_cost_bench(const Params& params, const std::string& config, const std::string& out_dir);
 
 }  // namespace girtd
