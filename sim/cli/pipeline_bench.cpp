@@ -1,6 +1,5 @@
 #include "cli/pipeline_bench.hpp"
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "io/subprocess.hpp"
 #include "io/trace_reader.hpp"
 #include "rtl/timing_comparison.hpp"
 
@@ -52,19 +52,7 @@ nlohmann::json render_in_child(const std::string& input, const std::string& back
   std::vector<std::string> args = {self_exe(), "render", input, "--backend", backend, "--out", dir, "--quiet"};
   args.insert(args.end(), extra.begin(), extra.end());
   if (!config.empty()) args.insert(args.end(), {"--config", config});
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  std::fflush(stdout);
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("fork failed");
-  if (pid == 0) {
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return nullptr;
+  if (run_process(args, false) != 0) return nullptr;
   std::ifstream in(dir + "/report.json");
   return nlohmann::json::parse(in);
 }

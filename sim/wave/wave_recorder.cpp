@@ -7,11 +7,9 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "common/input_error.hpp"
+#include "io/subprocess.hpp"
 #include "gtkwave/fstapi.h"
 #include "rtl/backend_rtl.hpp"
 #include "verilated_fst_c.h"
@@ -214,25 +212,8 @@ std::string gtkw_text(const std::vector<FstVar>& vars, const std::vector<std::st
   return o.str();
 }
 
-// fst2vcd (Debian gtkwave), run without a shell.
 void run_fst2vcd(const std::string& fst, const std::string& vcd) {
-  std::vector<std::string> args = {"fst2vcd", "-f", fst, "-o", vcd};
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  std::fflush(stdout);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    if (null >= 0) {
-      dup2(null, 1);
-      dup2(null, 2);
-    }
-    execvp(argv[0], argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0 || !fs::exists(vcd))
+  if (run_process({"fst2vcd", "-f", fst, "-o", vcd}, true) != 0 || !fs::exists(vcd))
     throw InputError("--wave", 0, "writing VCD needs fst2vcd (Debian package gtkwave): install it or ask for .fst");
 }
 

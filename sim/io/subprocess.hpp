@@ -1,0 +1,14 @@
+// Runs a program without a shell and waits for it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace girtd {
+
+// argv[0] is looked up on PATH. Returns the exit code, or -1 if the program
+// could not be started or did not exit normally. `quiet` sends its stdout
+// and stderr to /dev/null.
+int run_process(const std::vector<std::string>& argv, bool quiet);
+
+}  // namespace girtd
