@@ -89,6 +89,9 @@ void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
 
 void PipelineElaboration::start_wave(const WaveOptions& w) {
   if (!engine_->rtl()) throw InputError("--wave", 0, "waveforms need --backend rtl");
+  std::vector<std::string> stages;
+  for (const auto& a : activities_) stages.push_back(a->name);
+  check_pipeline_wave_scopes(w.scopes, stages);
   wave_ = std::make_unique<WaveRecorder>(w);
   std::map<const StageActivity*, const FifoActivity*> in_fifo;
   for (const auto& [fifo, reader] : in_fifo_of_) in_fifo[reader] = fifo_records_.at(fifo).get();
@@ -105,6 +108,7 @@ RenderOutput run_pipeline(const std::string& backend, const Trace& trace, const 
   elaborated = true;
   check_pipeline_input(polygons ? *polygons : trace, p);
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
+  if (opt.wave) check_rtl_wave_scopes(opt.wave->scopes, p);  // before the run's own RTL exists
   std::unique_ptr<DumpTap> tap;  // checked before the run, written after it
   if (opt.dump) tap = std::make_unique<DumpTap>(*opt.dump, trace, p, opt.polygon_source);
   PipelineElaboration pipeline(backend, trace, polygons, p, opt);

@@ -1,5 +1,7 @@
 #include "wave/wave_recorder.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +11,7 @@
 #include <sstream>
 
 #include "common/input_error.hpp"
+#include "config/params.hpp"
 #include "io/subprocess.hpp"
 #include "gtkwave/fstapi.h"
 #include "rtl/backend_rtl.hpp"
@@ -217,7 +220,61 @@ void run_fst2vcd(const std::string& fst, const std::string& vcd) {
     throw InputError("--wave", 0, "writing VCD needs fst2vcd (Debian package gtkwave): install it or ask for .fst");
 }
 
+// Scopes deep enough to name in a message.
+std::string scope_list(const std::vector<FstVar>& vars) {
+  std::string known;
+  std::map<std::string, int> seen;
+  for (const FstVar& v : vars)
+    if (!seen[v.scope]++ && std::count(v.scope.begin(), v.scope.end(), '.') <= 2) known += " " + v.scope;
+  return known;
+}
+
+bool under(const std::string& scope, const std::string& prefix) {
+  return scope == prefix || scope.rfind(prefix + ".", 0) == 0;
+}
+
 }  // namespace
+
+void check_pipeline_wave_scopes(const std::vector<std::string>& scopes, const std::vector<std::string>& stages) {
+  for (const std::string& s : scopes) {
+    if (!under(s, "pipeline")) continue;
+    bool known = s == "pipeline";
+    std::string names;
+    for (const std::string& st : stages) {
+      known = known || s == "pipeline." + st;
+      names += " pipeline." + st;
+    }
+    if (!known) throw InputError("--wave-scope", 0, "'" + s + "': this run's stages are" + names);
+  }
+}
+
+void check_rtl_wave_scopes(const std::vector<std::string>& scopes, const Params& p) {
+  std::vector<std::string> rtl_scopes;
+  for (const std::string& s : scopes)
+    if (!under(s, "pipeline")) rtl_scopes.push_back(s);
+  if (rtl_scopes.empty()) return;
+  // One dump of a scratch traced instance, read back for its hierarchy.
+  char path[] = "/tmp/girtd_scopes_XXXXXX";
+  const int fd = mkstemp(path);
+  if (fd < 0) throw std::runtime_error("cannot make a temporary file for the scope check");
+  ::close(fd);
+  std::vector<FstVar> vars;
+  {
+    BackendRtl rtl(p, 0, true);
+    VerilatedFstC tfp;
+    rtl.trace(&tfp);
+    tfp.open(path);
+    tfp.dump(0);
+    tfp.close();
+    vars = read_hierarchy(path);
+  }
+  std::remove(path);
+  for (const std::string& s : rtl_scopes) {
+    bool found = false;
+    for (const FstVar& v : vars) found = found || under(v.scope, s);
+    if (!found) throw InputError("--wave-scope", 0, "'" + s + "' names no part of the RTL (scopes include:" + scope_list(vars) + ")");
+  }
+}
 
 std::vector<std::string> WaveRecorder::finish(double run_end_ns) {
   tfp_->close();
@@ -230,14 +287,8 @@ std::vector<std::string> WaveRecorder::finish(double run_end_ns) {
   const std::vector<FstVar> vars = read_hierarchy(fst_tmp_);
   for (const std::string& s : opt_.scopes) {
     bool found = false;
-    for (const FstVar& v : vars) found = found || v.scope == s || v.scope.rfind(s + ".", 0) == 0;
-    if (!found) {
-      std::string known;
-      std::map<std::string, int> seen;
-      for (const FstVar& v : vars)
-        if (!seen[v.scope]++ && std::count(v.scope.begin(), v.scope.end(), '.') <= 2) known += " " + v.scope;
-      throw InputError("--wave-scope", 0, "'" + s + "' recorded nothing (scopes include:" + known + ")");
-    }
+    for (const FstVar& v : vars) found = found || under(v.scope, s);
+    if (!found) throw InputError("--wave-scope", 0, "'" + s + "' recorded nothing (scopes include:" + scope_list(vars) + ")");
   }
   std::ofstream(pixels_tmp_) << pixel_log_;
   const std::string stem = opt_.path.substr(0, opt_.path.size() - 4);

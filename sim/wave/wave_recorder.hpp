@@ -22,6 +22,15 @@ class VerilatedFstC;
 namespace girtd {
 
 class BackendRtl;
+struct Params;
+
+// Check --wave-scope names before a run (InputError naming the scopes
+// there are). RTL paths: against the traced model's own hierarchy (one dump
+// of a scratch instance, read back); call it before the run's back end
+// exists (Verilator 5.006 wants one live instance of a model at a time).
+// `pipeline...` paths: against the stages the run elaborated.
+void check_rtl_wave_scopes(const std::vector<std::string>& scopes, const Params& p);
+void check_pipeline_wave_scopes(const std::vector<std::string>& scopes, const std::vector<std::string>& stages);
 
 class WaveRecorder {
  public:

@@ -74,6 +74,10 @@ done
   --wave-scope TOP.no_such_block 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 && $(wc -l < "$TMP/err") -eq 1 && ! -e "$TMP/b1.fst" && ! -e "$TMP/b1" ]] && ok \
   || bad "unknown scope: exit $rc, $(cat "$TMP/err")"
+grep -q "names no part of the RTL (scopes include: .*TOP.girtd_backend.u_dda" "$TMP/err" && ok || bad "scope error: $(cat "$TMP/err")"
+"$GIRTD" render traces/models/star.obj --backend rtl --out "$TMP/b1p" --wave "$TMP/b1p.fst" \
+  --wave-scope pipeline.lightning 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/b1p" ]] && grep -q "pipeline.lighting" "$TMP/err" && ok || bad "stage scope typo: exit $rc"
 ls "$TMP" | grep -q "partial" && bad "partial files left behind" || ok
 "$GIRTD" render traces/equilateral_200.trace --backend approx --wave "$TMP/b2.fst" --out "$TMP/b2" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 ]] && grep -q "backend rtl" "$TMP/err" && ok || bad "approx --wave: exit $rc"
