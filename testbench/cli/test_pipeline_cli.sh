@@ -63,7 +63,7 @@ cmp -s <(grep -v '^#' "$TMP/zg.dda") <(grep -v '^#' "$TMP/za.dda") && ok || bad 
 
 # 6. A run longer than a second shows progress on a terminal, and not
 #    when stderr is a file.
-script -qec "'$GIRTD' render traces/scenes/window.json --backend rtl --out '$TMP/win' --quiet" /dev/null \
+script -qec "'$GIRTD' render traces/scenes/demo.json --backend rtl --out '$TMP/win' --quiet" /dev/null \
   > "$TMP/tty" 2>&1 || true
 [[ -s "$TMP/win/report.json" ]] && ok || bad "render on a terminal"
 grep -qE "\[girtd\] rtl: frame 1/1, [0-9]+/[0-9]+ triangles" "$TMP/tty" && ok || bad "no progress line: $(tail -c 300 "$TMP/tty")"
