@@ -33,8 +33,8 @@ DumpRequest parse_dump(const std::string& spec) {
 }
 
 void reject_unbuilt_options(const RenderArgs& a) {
-  if (!a.wave.empty() && a.backend != "rtl")
-    throw InputError("--wave", 0, "waveforms record the RTL in the SystemC pipeline: use --backend rtl");
+  if (!a.wave.empty() && !is_pipeline_backend(a.backend))
+    throw InputError("--wave", 0, "waveforms record the SystemC pipeline: use --backend rtl (or approx)");
   if (a.frames != "last" && a.frames != "all")
     throw InputError("--frames", 0, "expected 'last' or 'all', got '" + a.frames + "'");
 }
@@ -203,8 +203,9 @@ int run_render(const RenderArgs& a) {
                 files.path("report.json").c_str());
     if (opt.dump) std::printf("  dump       %s\n", opt.dump->path.c_str());
     if (!out.wave_files.empty())
-      std::printf("  waveform   %s (open: gtkwave %s %s; pixels pushed: %s)\n", out.wave_files[0].c_str(),
-                  out.wave_files[0].c_str(), out.wave_files[1].c_str(), out.wave_files[2].c_str());
+      std::printf("  waveform   %s (open: gtkwave %s %s)\n", out.wave_files[0].c_str(), out.wave_files[0].c_str(),
+                  out.wave_files[1].c_str());
+    if (out.wave_files.size() > 2) std::printf("  pixel log  %s (pixels the DDA pushed in the window)\n", out.wave_files[2].c_str());
   }
   return 0;
 }

@@ -13,6 +13,7 @@ BackEndStage::BackEndStage(const sc_core::sc_module_name& name, BackEndEngine& e
     : sc_module(name), engine_(engine), frames_(frames), tick_ns_(tick_ns), a_(activity), in_fifo_(in_fifo),
       frame_done_(std::move(frame_done)), progress_(std::move(progress)) {
   SC_THREAD(run);
+  SC_THREAD(sample);
 }
 
 sc_time BackEndStage::at(uint64_t tick) const { return sc_time(static_cast<double>(tick) * tick_ns_, sc_core::SC_NS); }
@@ -54,7 +55,7 @@ Token<DdaParams> BackEndStage::next_token() {
   a_.state = StageState::kStarved;
   for (;;) {
     const double now_ns = sc_time_stamp().to_seconds() * 1e9;
-    if (!wave_ || now_ns > wave_->window_end_ns()) {
+    if (!wave_ || !engine_.rtl() || now_ns > wave_->window_end_ns()) {
       tok = in.read();
       engine_.idle_until(tick_of(sc_time_stamp()));
       break;
@@ -74,8 +75,23 @@ Token<DdaParams> BackEndStage::next_token() {
   return tok;
 }
 
+// With no RTL to clock (approx), the SystemC side is sampled once per base
+// tick inside the window, until the back end is done.
+void BackEndStage::sample() {
+  if (!wave_ || engine_.rtl()) return;
+  for (uint64_t tick = tick_of(sc_time(wave_->window_start_ns(), sc_core::SC_NS)); !finished_; ++tick) {
+    const double t_ns = double(tick) * tick_ns_;
+    if (t_ns > wave_->window_end_ns()) return;
+    sync_to_ns(t_ns);
+    if (finished_) return;
+    wave_->set_frame(static_cast<uint32_t>(frame_));
+    wave_->dump(t_ns);
+  }
+}
+
 void BackEndStage::run() {
-  if (wave_ || lockstep_) engine_.rtl()->on_tick([this](const BackendRtl::TickProbe& p) { on_tick(p); });
+  if ((wave_ || lockstep_) && engine_.rtl())
+    engine_.rtl()->on_tick([this](const BackendRtl::TickProbe& p) { on_tick(p); });
   uint64_t triangles = 0;
   a_.state = StageState::kBusy;
   for (;;) {

@@ -36,7 +36,8 @@ class BackEndStage : public sc_core::sc_module {
 
   bool finished() const { return finished_; }
   // Record a waveform: every tick in the window is dumped once SystemC
-  // time has reached it (the engine must be rtl).
+  // time has reached it (rtl: the RTL and the SystemC side; approx: the
+  // SystemC side alone).
   void record(WaveRecorder* rec) { wave_ = rec; }
   // Bring SystemC time level with the RTL at every tick (pipeline.rtl_sync).
   void sync_every_tick(bool on) { lockstep_ = on; }
@@ -53,6 +54,7 @@ class BackEndStage : public sc_core::sc_module {
   void sync_to_ns(double t_ns);
   Token<DdaParams> next_token();
   void on_tick(const BackendRtl::TickProbe& p);
+  void sample();
 
   BackEndEngine& engine_;
   const std::vector<FrameSettings>& frames_;

@@ -290,7 +290,7 @@ std::vector<std::string> WaveRecorder::finish(double run_end_ns) {
     for (const FstVar& v : vars) found = found || under(v.scope, s);
     if (!found) throw InputError("--wave-scope", 0, "'" + s + "' recorded nothing (scopes include:" + scope_list(vars) + ")");
   }
-  std::ofstream(pixels_tmp_) << pixel_log_;
+  if (has_rtl_) std::ofstream(pixels_tmp_) << pixel_log_;  // approx pushes no RTL pixels
   const std::string stem = opt_.path.substr(0, opt_.path.size() - 4);
   const std::string gtkw = stem + ".gtkw", pixels = stem + ".pixels.csv";
   std::ofstream(gtkw + ".partial") << gtkw_text(vars, stage_names_, fs::absolute(opt_.path).string(), opt_.t0_ns);
@@ -302,8 +302,9 @@ std::vector<std::string> WaveRecorder::finish(double run_end_ns) {
     fs::rename(fst_tmp_, opt_.path);
   }
   fs::rename(gtkw + ".partial", gtkw);
-  fs::rename(pixels_tmp_, pixels);
   finished_ = true;
+  if (!has_rtl_) return {opt_.path, gtkw};
+  fs::rename(pixels_tmp_, pixels);
   return {opt_.path, gtkw, pixels};
 }
 

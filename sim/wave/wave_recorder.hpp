@@ -4,9 +4,9 @@
 // SystemC values are written through Verilator's own FST writer (trace
 // callbacks), so both sides share one file and one time axis: the
 // pipeline dumps at a tick only once SystemC time has reached it.
-// Also writes FILE.gtkw (signals grouped by stage) and FILE.pixels.csv
-// (every pixel the DDA pushed in the window: the run's own log), all
-// under temporary names until finish().
+// Also writes FILE.gtkw (signals grouped by stage) and, with the RTL,
+// FILE.pixels.csv (every pixel the DDA pushed in the window: the run's own
+// log), all under temporary names until finish().
 #pragma once
 
 #include <cstdint>

@@ -22,9 +22,9 @@ done
 for b in golden approx; do
   "$GIRTD" render traces/models/star.obj --backend $b --out "$TMP/star_$b" --quiet && ok || bad "star $b"
 done
-[[ $(jq -c .frontend "$TMP/star_golden/report.json") == $(jq -c .frontend "$TMP/star_approx/report.json") ]] \
+[[ "$(jq -c .frontend "$TMP/star_golden/report.json")" == "$(jq -c .frontend "$TMP/star_approx/report.json")" ]] \
   && ok || bad "front-end counts differ between golden and approx"
-[[ $(sha "$TMP/star_golden") == $(sha "$TMP/star_approx") ]] && ok || bad "star: approx frame differs"
+[[ "$(sha "$TMP/star_golden")" == "$(sha "$TMP/star_approx")" ]] && ok || bad "star: approx frame differs"
 
 # 3. The throughput keys: present, non-null, consistent.
 r="$TMP/star_approx/report.json"
@@ -54,7 +54,7 @@ printf '{"had": {"write_behind": true}}\n' > "$TMP/wb.json"
 [[ $rc -eq 2 ]] && grep -q "write_behind" "$TMP/err" && ok || bad "approx with write-behind: exit $rc"
 "$GIRTD" render traces/equilateral_200.trace --backend rtl --config "$TMP/wb.json" --out "$TMP/wb_rtl" --quiet \
   && ok || bad "rtl with write-behind failed"
-[[ $(sha "$TMP/wb_rtl") == $(sha "$TMP/eq_golden") ]] && ok || bad "write-behind changed the frame"
+[[ "$(sha "$TMP/wb_rtl")" == "$(sha "$TMP/eq_golden")" ]] && ok || bad "write-behind changed the frame"
 
 # 5. --dump from a timed back end equals golden's dump.
 "$GIRTD" render traces/z_overlap.trace --backend golden --out "$TMP/zg" --dump "dda=$TMP/zg.dda" --quiet && ok || bad "dump golden"
