@@ -82,6 +82,7 @@ void BackEndStage::sample() {
   for (uint64_t tick = tick_of(sc_time(wave_->window_start_ns(), sc_core::SC_NS)); !finished_; ++tick) {
     const double t_ns = double(tick) * tick_ns_;
     if (t_ns > wave_->window_end_ns()) return;
+    if (!sc_core::sc_pending_activity()) return;  // nothing else will ever happen: do not keep time going
     sync_to_ns(t_ns);
     if (finished_) return;
     wave_->set_frame(static_cast<uint32_t>(frame_));

@@ -107,7 +107,13 @@ RenderOutput run_pipeline(const std::string& backend, const Trace& trace, const 
   elaborated = true;
   check_pipeline_input(polygons ? *polygons : trace, p);
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
-  if (opt.wave) check_rtl_wave_scopes(opt.wave->scopes, p);  // before the run's own RTL exists
+  if (opt.wave) {
+    if (backend == "rtl") check_rtl_wave_scopes(opt.wave->scopes, p);  // before the run's own RTL exists
+    else
+      for (const std::string& s : opt.wave->scopes)
+        if (s != "pipeline" && s.rfind("pipeline.", 0) != 0)
+          throw InputError("--wave-scope", 0, "'" + s + "': approx records the SystemC side alone (pipeline...)");
+  }
   std::unique_ptr<DumpTap> tap;  // checked before the run, written after it
   if (opt.dump) tap = std::make_unique<DumpTap>(*opt.dump, trace, p, opt.polygon_source);
   PipelineElaboration pipeline(backend, trace, polygons, p, opt);

@@ -254,21 +254,24 @@ void check_rtl_wave_scopes(const std::vector<std::string>& scopes, const Params&
     if (!under(s, "pipeline")) rtl_scopes.push_back(s);
   if (rtl_scopes.empty()) return;
   // One dump of a scratch traced instance, read back for its hierarchy.
-  char path[] = "/tmp/girtd_scopes_XXXXXX";
-  const int fd = mkstemp(path);
+  std::string path = (fs::temp_directory_path() / "girtd_scopes_XXXXXX").string();
+  const int fd = mkstemp(path.data());
   if (fd < 0) throw std::runtime_error("cannot make a temporary file for the scope check");
   ::close(fd);
+  struct Remove {
+    std::string path;
+    ~Remove() { std::remove(path.c_str()); }
+  } remove_after{path};
   std::vector<FstVar> vars;
   {
     BackendRtl rtl(p, 0, true);
     VerilatedFstC tfp;
     rtl.trace(&tfp);
-    tfp.open(path);
+    tfp.open(path.c_str());
     tfp.dump(0);
     tfp.close();
     vars = read_hierarchy(path);
   }
-  std::remove(path);
   for (const std::string& s : rtl_scopes) {
     bool found = false;
     for (const FstVar& v : vars) found = found || under(v.scope, s);
@@ -291,6 +294,7 @@ std::vector<std::string> WaveRecorder::finish(double run_end_ns) {
     if (!found) throw InputError("--wave-scope", 0, "'" + s + "' recorded nothing (scopes include:" + scope_list(vars) + ")");
   }
   if (has_rtl_) std::ofstream(pixels_tmp_) << pixel_log_;  // approx pushes no RTL pixels
+  else fs::remove(opt_.path.substr(0, opt_.path.size() - 4) + ".pixels.csv");  // not an earlier run's
   const std::string stem = opt_.path.substr(0, opt_.path.size() - 4);
   const std::string gtkw = stem + ".gtkw", pixels = stem + ".pixels.csv";
   std::ofstream(gtkw + ".partial") << gtkw_text(vars, stage_names_, fs::absolute(opt_.path).string(), opt_.t0_ns);

@@ -59,9 +59,13 @@ read -r first last < <($Q "$TMP/s/w.vcd" times)
 # 4. Recording changes nothing: the same modeled time and counts with and
 #    without a waveform, also when the window ends while the DDA waits for
 #    the front end (cube.obj's DDA is starved at 110 us).
-for input in traces/directed/nf_rows.dda traces/models/cube.obj; do
-  "$GIRTD" render $input --backend rtl --out "$TMP/n0" --quiet
-  timeout 120 "$GIRTD" render $input --backend rtl --out "$TMP/n1" --wave "$TMP/n1.fst" --wave-window 0:110us --quiet \
+printf '{"had": {"write_behind": true, "prefetch": true, "dirty_bits": true}}\n' > "$TMP/mem.json"
+for run in "traces/directed/nf_rows.dda" "traces/models/cube.obj" "traces/models/cube.obj --config $TMP/mem.json"; do
+  input=${run%% *}
+  # shellcheck disable=SC2086
+  "$GIRTD" render $run --backend rtl --out "$TMP/n0" --quiet
+  # shellcheck disable=SC2086
+  timeout 120 "$GIRTD" render $run --backend rtl --out "$TMP/n1" --wave "$TMP/n1.fst" --wave-window 0:110us --quiet \
     && ok || bad "$input: --wave run failed or hung"
   for k in modeled_time_s pixels_generated dda_cycles time_split image_sha256; do
     [[ "$(jq -c .$k "$TMP/n0/report.json")" == "$(jq -c .$k "$TMP/n1/report.json")" ]] && ok \
@@ -80,6 +84,11 @@ read -r first last < <($Q "$TMP/a1.vcd" times)
 [[ $first -eq 0 && $last -eq 2000000 ]] && ok || bad "approx window $first..$last"
 [[ "$(jq -c '[.modeled_time_s, .time_split]' "$TMP/a0/report.json")" == "$(jq -c '[.modeled_time_s, .time_split]' "$TMP/a1/report.json")" ]] \
   && ok || bad "approx --wave changed the timing"
+
+[[ ! -e "$TMP/a1/w.pixels.csv" ]] && ok || bad "approx wrote a pixel log"
+"$GIRTD" render traces/models/star.obj --backend approx --out "$TMP/a2" --wave "$TMP/a2.fst" \
+  --wave-scope TOP.girtd_backend.u_dda 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/a2" ]] && grep -q "SystemC side alone" "$TMP/err" && ok || bad "approx with an RTL scope: exit $rc"
 
 # 5. Refusals: exit 2, one line, nothing written.
 "$GIRTD" render traces/equilateral_200.trace --backend rtl --out "$TMP/b1" --wave "$TMP/b1.fst" \
