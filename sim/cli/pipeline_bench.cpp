@@ -39,17 +39,11 @@ std::vector<std::string> sample_inputs() {
   return out;
 }
 
-std::string self_exe() {
-  std::vector<char> buf(4096);
-  const ssize_t n = readlink("/proc/self/exe", buf.data(), buf.size() - 1);
-  if (n <= 0) throw std::runtime_error("cannot find the girtd executable (/proc/self/exe)");
-  return std::string(buf.data(), static_cast<size_t>(n));
-}
 
 // One `girtd render` in a child process; its report, or null when it failed.
 nlohmann::json render_in_child(const std::string& input, const std::string& backend, const std::string& dir,
                                const std::string& config, const std::vector<std::string>& extra = {}) {
-  std::vector<std::string> args = {self_exe(), "render", input, "--backend", backend, "--out", dir, "--quiet"};
+  std::vector<std::string> args = {self_executable(), "render", input, "--backend", backend, "--out", dir, "--quiet"};
   args.insert(args.end(), extra.begin(), extra.end());
   if (!config.empty()) args.insert(args.end(), {"--config", config});
   if (run_process(args, false) != 0) return nullptr;

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <stdexcept>
 
 namespace girtd {
 
@@ -31,6 +32,13 @@ int run_process(const std::vector<std::string>& args, bool quiet) {
   int status = 0;
   if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status)) return -1;
   return WEXITSTATUS(status);
+}
+
+std::string self_executable() {
+  std::vector<char> buf(4096);
+  const ssize_t n = readlink("/proc/self/exe", buf.data(), buf.size() - 1);
+  if (n <= 0) throw std::runtime_error("cannot find the girtd executable (/proc/self/exe)");
+  return std::string(buf.data(), static_cast<size_t>(n));
 }
 
 }  // namespace girtd

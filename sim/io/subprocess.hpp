@@ -11,4 +11,8 @@ namespace girtd {
 // and stderr to /dev/null.
 int run_process(const std::vector<std::string>& argv, bool quiet);
 
+// This program's own path (/proc/self/exe), to run a subcommand in a child
+// process: SystemC elaborates once per process.
+std::string self_executable();
+
 }  // namespace girtd
