@@ -95,6 +95,13 @@ void BackEndStage::run() {
     engine_.rtl()->on_tick([this](const BackendRtl::TickProbe& p) { on_tick(p); });
   uint64_t triangles = 0;
   a_.state = StageState::kBusy;
+  // A frame's clear, or its write-back and swap, timed apart from drawing.
+  auto frame_work = [this](auto&& work) {
+    engine_.drain();
+    const uint64_t from = engine_.now_tick();
+    work();
+    frame_ticks_ += engine_.now_tick() - from;
+  };
   for (;;) {
     const uint64_t before = engine_.now_tick();  // the run's end, if the next token is the last
     sync_to(engine_.ready_tick());
@@ -103,10 +110,7 @@ void BackEndStage::run() {
     frame_ = tok.frame;
     switch (tok.kind) {
       case TokenKind::kFrameBegin:
-        engine_.drain();
-        frame_work_from_ = engine_.now_tick();
-        engine_.begin_frame(frames_.at(tok.frame));
-        frame_ticks_ += engine_.now_tick() - frame_work_from_;
+        frame_work([&] { engine_.begin_frame(frames_.at(tok.frame)); });
         break;
       case TokenKind::kItem:
         ++a_.items;
@@ -114,10 +118,7 @@ void BackEndStage::run() {
         if (progress_ && (++triangles & 15) == 0) progress_(tok.frame, triangles, at(engine_.now_tick()).to_seconds());
         break;
       case TokenKind::kFrameEnd:
-        engine_.drain();
-        frame_work_from_ = engine_.now_tick();
-        engine_.end_frame();
-        frame_ticks_ += engine_.now_tick() - frame_work_from_;
+        frame_work([&] { engine_.end_frame(); });
         if (frame_done_) frame_done_(tok.frame);
         break;
       case TokenKind::kEnd:

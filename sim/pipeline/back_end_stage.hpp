@@ -68,7 +68,7 @@ class BackEndStage : public sc_core::sc_module {
   size_t frame_ = 0;
   bool finished_ = false;
   uint64_t end_tick_ = 0;
-  uint64_t frame_ticks_ = 0, frame_work_from_ = 0;
+  uint64_t frame_ticks_ = 0;
 };
 
 }  // namespace girtd

@@ -127,7 +127,6 @@ class PipelineElaboration {
   std::map<const void*, StageActivity*> in_fifo_of_;
   std::map<const void*, std::unique_ptr<FifoActivity>> fifo_records_;
   StageActivity* back_activity_ = nullptr;
-  mutable uint64_t back_fifo_max_ = 0;
   std::vector<RgbImage> per_frame_;
   std::chrono::steady_clock::time_point wall0_;
   bool progress_printed_ = false;

@@ -39,12 +39,13 @@ void PipelineElaboration::collect(RunStats& s) const {
     s.stages.push_back(st);
   }
   // FIFO occupancy: each record belongs to the stage reading that FIFO.
+  uint64_t back_fifo_max = 0;
   for (const auto& [fifo, reader] : in_fifo_of_) {
     const auto rec = fifo_records_.find(fifo);
     if (rec == fifo_records_.end()) continue;
     for (StageStats& st : s.stages)
       if (st.name == reader->name) st.fifo_in_max = rec->second->max_occupancy;
-    if (reader == back_activity_) back_fifo_max_ = rec->second->max_occupancy;
+    if (reader == back_activity_) back_fifo_max = rec->second->max_occupancy;
   }
   const double clock_s = p_.dda_clock_ns * 1e-9;
   StageStats dda;
@@ -54,7 +55,7 @@ void PipelineElaboration::collect(RunStats& s) const {
   dda.starved_s = back_activity_->starved_s;
   dda.blocked_s = double(be.dda_wait_ticks) * tick_s;
   dda.stall_s = *dda.starved_s + *dda.blocked_s;
-  dda.fifo_in_max = back_fifo_max_;
+  dda.fifo_in_max = back_fifo_max;
   s.stages.push_back(dda);
   StageStats had;
   had.name = "had";
