@@ -33,4 +33,8 @@ std::unique_ptr<Backend> make_backend(const std::string& name, const Params& par
 
 std::vector<std::string> known_backends();
 
+// The hardware's Norm is a shift: every frame's Q must be 0 or a power of
+// two 1/16..8 (InputError at the line that set it).
+void require_hardware_q(const Trace& trace);
+
 }  // namespace girtd

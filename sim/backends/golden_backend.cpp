@@ -1,7 +1,6 @@
 #include "backends/golden_backend.hpp"
 
 #include "common/input_error.hpp"
-#include "common/triangle_setup.hpp"
 #include "thesis/thesis_preparer.hpp"
 
 namespace girtd {
@@ -21,10 +20,7 @@ std::vector<std::string> GoldenBackend::not_modeled() const {
 void GoldenBackend::begin(const Trace& trace) {
   thesis_mode_ = trace.level == TraceLevel::kThesis;
   if (trace.level == TraceLevel::kThesis) return;  // PIX_INTERNO fixes Q = 1
-  for (const TraceFrame& f : trace.frames)
-    if (!is_hardware_q(f.settings.q))
-      throw InputError(trace.path, f.settings.q_line,
-                       "Q must be 0 or a power of two 1/16..8 for the hardware back ends (Norm is a shift)");
+  require_hardware_q(trace);
 }
 
 namespace {

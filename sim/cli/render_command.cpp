@@ -145,9 +145,7 @@ int run_render(const RenderArgs& a) {
   opt.wave = wave;
   RenderOutput out;
   if (pipelined) {
-    const Trace* polygons = input.polygons ? &*input.polygons : nullptr;
-    check_pipeline_input(polygons ? *polygons : trace, params);
-    out = run_pipeline(a.backend, trace, polygons, params, opt);
+    out = run_pipeline(a.backend, trace, input.polygons ? &*input.polygons : nullptr, params, opt);
   } else {
     out = render_trace(trace, *backend, params, opt);
     out.stats.frontend = input.frontend;

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "common/input_error.hpp"
-#include "common/triangle_setup.hpp"
+#include "backends/backend.hpp"
 #include "pipeline/pipeline_elaboration.hpp"
 
 namespace girtd {
@@ -25,14 +25,17 @@ std::unique_ptr<BackEndEngine> make_back_end_engine(const std::string& backend, 
 
 bool is_pipeline_backend(const std::string& name) { return name == "approx" || name == "rtl"; }
 
-void check_pipeline_input(const Trace& trace, const Params&) {
+namespace {
+
+// Input the pipeline cannot take: thesis-level traces, a Q the hardware
+// cannot do.
+void check_pipeline_input(const Trace& trace) {
   if (trace.level == TraceLevel::kThesis)
     throw InputError(trace.path, 0, "a thesis-level trace runs the appendix program: use --backend golden");
-  for (const TraceFrame& f : trace.frames)
-    if (!is_hardware_q(f.settings.q))
-      throw InputError(trace.path, f.settings.q_line,
-                       "Q must be 0 or a power of two 1/16..8 for the hardware back ends (Norm is a shift)");
+  require_hardware_q(trace);
 }
+
+}  // namespace
 
 PipelineElaboration::PipelineElaboration(const std::string& backend, const Trace& trace, const Trace* polygons, const Params& p,
          const RenderOptions& opt)
@@ -66,7 +69,8 @@ RenderOutput PipelineElaboration::run() {
 
 void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
   StageActivity& a = activity("back_end");
-  in_fifo_of_[&in] = &a;
+  FifoActivity& in_record = fifo_activity(in);
+  in_fifo_[&a] = &in_record;
   back_activity_ = &a;
   BackEndStage::FrameDone done;
   if (opt_.keep_all_frames) done = [this](size_t) { per_frame_.push_back(engine_->shown()); };
@@ -81,7 +85,7 @@ void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
                    total_items_ ? 100.0 * double(triangles) / double(total_items_) : 0.0, modeled_s * 1e3, wall);
       progress_printed_ = true;
     };
-  back_end_ = std::make_unique<BackEndStage>("back_end", *engine_, settings_, p_.base_tick_ns, a, fifo_activity(in),
+  back_end_ = std::make_unique<BackEndStage>("back_end", *engine_, settings_, p_.base_tick_ns, a, in_record,
                                              std::move(done), std::move(progress));
   back_end_->in(in);
   if (p_.pipeline_rtl_sync_every_tick && engine_->rtl()) back_end_->sync_every_tick(true);
@@ -92,9 +96,7 @@ void PipelineElaboration::start_wave(const WaveOptions& w) {
   for (const auto& a : activities_) stages.push_back(a->name);
   check_pipeline_wave_scopes(w.scopes, stages);
   wave_ = std::make_unique<WaveRecorder>(w);
-  std::map<const StageActivity*, const FifoActivity*> in_fifo;
-  for (const auto& [fifo, reader] : in_fifo_of_) in_fifo[reader] = fifo_records_.at(fifo).get();
-  for (const auto& a : activities_) wave_->add_stage(*a, in_fifo.count(a.get()) ? in_fifo[a.get()] : nullptr);
+  for (const auto& a : activities_) wave_->add_stage(*a, in_fifo_.at(a.get()));
   if (engine_->rtl()) wave_->add_rtl(*engine_->rtl());  // approx: the SystemC side alone
   wave_->open();
   back_end_->record(wave_.get());
@@ -105,7 +107,7 @@ RenderOutput run_pipeline(const std::string& backend, const Trace& trace, const 
   static bool elaborated = false;
   if (elaborated) throw std::logic_error("SystemC elaborates once per process: one pipeline run per process");
   elaborated = true;
-  check_pipeline_input(polygons ? *polygons : trace, p);
+  check_pipeline_input(polygons ? *polygons : trace);
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   if (opt.wave) {
     if (backend == "rtl") check_rtl_wave_scopes(opt.wave->scopes, p);  // before the run's own RTL exists

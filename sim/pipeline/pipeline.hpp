@@ -15,10 +15,6 @@ namespace girtd {
 
 bool is_pipeline_backend(const std::string& name);  // "approx", "rtl"
 
-// Refuses input the pipeline cannot take (InputError): thesis-level traces,
-// a Q the hardware cannot do.
-void check_pipeline_input(const Trace& trace, const Params& p);
-
 // `trace`: the triangle- or DDA-level trace; `polygons`: the polygon-level
 // trace it was made from, when there is one (the pipeline then runs the
 // front end itself; `trace` is only used for --dump).

@@ -57,10 +57,11 @@ class PipelineElaboration {
                              typename TimedStage<In, Out>::FrameFn on_begin = {},
                              typename TimedStage<In, Out>::FrameFn on_end = {}) {
     StageActivity& a = activity(name);
-    in_fifo_of_[&in] = &a;
+    FifoActivity& in_record = fifo_activity(in);
+    in_fifo_[&a] = &in_record;
     sc_fifo<Token<Out>>& out = fifo<Out>(name + "_out");
     auto m = std::make_unique<TimedStage<In, Out>>(name.c_str(), rate(name), std::move(on_item), std::move(on_begin),
-                                                   std::move(on_end), a, fifo_activity(in), fifo_activity(out));
+                                                   std::move(on_end), a, in_record, fifo_activity(out));
     m->in(in);
     m->out(out);
     modules_.push_back(std::move(m));
@@ -124,7 +125,7 @@ class PipelineElaboration {
   std::vector<std::unique_ptr<sc_core::sc_module>> modules_;
   std::unique_ptr<BackEndStage> back_end_;
   std::vector<std::unique_ptr<StageActivity>> activities_;
-  std::map<const void*, StageActivity*> in_fifo_of_;
+  std::map<const StageActivity*, const FifoActivity*> in_fifo_;  // each stage's input FIFO
   std::map<const void*, std::unique_ptr<FifoActivity>> fifo_records_;
   StageActivity* back_activity_ = nullptr;
   std::vector<RgbImage> per_frame_;

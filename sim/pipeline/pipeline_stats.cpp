@@ -36,16 +36,8 @@ void PipelineElaboration::collect(RunStats& s) const {
     st.blocked_s = a->blocked_s;
     st.stall_s = a->starved_s + a->blocked_s;
     st.flops = a->flops;
+    st.fifo_in_max = in_fifo_.at(a.get())->max_occupancy;
     s.stages.push_back(st);
-  }
-  // FIFO occupancy: each record belongs to the stage reading that FIFO.
-  uint64_t back_fifo_max = 0;
-  for (const auto& [fifo, reader] : in_fifo_of_) {
-    const auto rec = fifo_records_.find(fifo);
-    if (rec == fifo_records_.end()) continue;
-    for (StageStats& st : s.stages)
-      if (st.name == reader->name) st.fifo_in_max = rec->second->max_occupancy;
-    if (reader == back_activity_) back_fifo_max = rec->second->max_occupancy;
   }
   const double clock_s = p_.dda_clock_ns * 1e-9;
   StageStats dda;
@@ -55,7 +47,7 @@ void PipelineElaboration::collect(RunStats& s) const {
   dda.starved_s = back_activity_->starved_s;
   dda.blocked_s = double(be.dda_wait_ticks) * tick_s;
   dda.stall_s = *dda.starved_s + *dda.blocked_s;
-  dda.fifo_in_max = back_fifo_max;
+  dda.fifo_in_max = in_fifo_.at(back_activity_)->max_occupancy;
   s.stages.push_back(dda);
   StageStats had;
   had.name = "had";

@@ -5,7 +5,7 @@
 #include <random>
 
 #include "common/input_error.hpp"
-#include "common/triangle_setup.hpp"
+#include "backends/backend.hpp"
 #include "dda/dda_preparer.hpp"
 #include "had/had.hpp"
 #include "io/trace_reader.hpp"
@@ -120,9 +120,7 @@ RegressionRow regress_trace(const std::string& path, const Params& p, DdaRtl& rt
   const Trace trace = read_trace(path, std::nullopt, p);
   if (trace.level != TraceLevel::kTriangle && trace.level != TraceLevel::kDda)
     throw InputError(path, 0, std::string("regress takes triangle- and DDA-level traces, not ") + level_name(trace.level));
-  for (const TraceFrame& f : trace.frames)
-    if (!is_hardware_q(f.settings.q))
-      throw InputError(path, f.settings.q_line, "Q must be 0 or a power of two 1/16..8 for the RTL");
+  require_hardware_q(trace);
   FrameChecker checker(p, rtl, backend, stall, 1);
   DdaPreparer prep(p);
   for (const TraceFrame& f : trace.frames) {
