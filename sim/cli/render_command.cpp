@@ -136,6 +136,8 @@ int run_render(const RenderArgs& a) {
   if (wave) check_output_dir(fs::path(wave->path).parent_path().string(), "--wave");
   const LoadedInput input = load_input(a, params);
   const Trace& trace = input.trace;
+  const std::vector<std::string>& warnings = input.polygons ? input.polygons->warnings : trace.warnings;
+  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
   RenderOptions opt;
   opt.keep_all_frames = a.frames == "all";
@@ -157,6 +159,7 @@ int run_render(const RenderArgs& a) {
   ctx.level = level_name(input.polygons ? TraceLevel::kPolygon : trace.level);
   ctx.not_modeled = pipelined ? std::vector<std::string>{} : backend->not_modeled();
   ctx.image_sha256 = sha256_hex(out.shown.rgb);
+  ctx.warnings = warnings;
   const nlohmann::json report = make_report(ctx, out.stats, params);
 
   OutputSet files(dir);

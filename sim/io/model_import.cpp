@@ -1,8 +1,9 @@
 #include "io/model_import.hpp"
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/DefaultLogger.hpp>
+#include <assimp/Importer.hpp>
 #include <assimp/LogStream.hpp>
-#include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -17,6 +18,7 @@
 
 #include "common/input_error.hpp"
 #include "frontend/polygon_shape.hpp"
+#include "io/assimp_messages.hpp"
 #include "io/model_precheck.hpp"
 
 namespace girtd {
@@ -39,8 +41,8 @@ std::string lower_extension(const std::string& path) {
 }
 
 // assimp's message, with "line N" turned into the error's line when present.
-[[noreturn]] void fail_assimp(const std::string& path) {
-  std::string msg = aiGetErrorString();
+[[noreturn]] void fail_assimp(const std::string& path, const Assimp::Importer& importer) {
+  std::string msg = importer.GetErrorString();
   int line = 0;
   std::smatch m;
   if (std::regex_search(msg, m, std::regex("[Ll]ine\\s*:?\\s*(\\d{1,9})"))) line = std::stoi(m[1]);
@@ -48,25 +50,71 @@ std::string lower_extension(const std::string& path) {
   fail(path, line, "cannot read the model: " + (msg.empty() ? std::string("unknown format or empty file") : msg));
 }
 
-// Keeps assimp quiet (nothing on stdout) and remembers the first error it
-// logs: some readers log a broken index, clamp it and carry on (OFF).
-class ErrorCapture : public Assimp::LogStream {
+// Keeps assimp quiet (nothing on stdout) and keeps what it logs at Warn and
+// Err severity, sorted (io/assimp_messages): some readers log a broken index,
+// clamp it and carry on (OFF); others log a missing material and carry on
+// with a default one (OBJ).
+class MessageLog : public Assimp::LogStream {
  public:
-  ErrorCapture() {
+  MessageLog() : warn_(this, false), err_(this, true) {
     Assimp::DefaultLogger::create("", Assimp::Logger::NORMAL, 0);  // no default streams
-    Assimp::DefaultLogger::get()->attachStream(this, Assimp::Logger::Err);
+    Assimp::DefaultLogger::get()->attachStream(&warn_, Assimp::Logger::Warn);
+    Assimp::DefaultLogger::get()->attachStream(&err_, Assimp::Logger::Err);
   }
-  ~ErrorCapture() override {
-    Assimp::DefaultLogger::get()->detachStream(this, Assimp::Logger::Err);
+  ~MessageLog() override {
+    Assimp::DefaultLogger::get()->detachStream(&warn_, Assimp::Logger::Warn);
+    Assimp::DefaultLogger::get()->detachStream(&err_, Assimp::Logger::Err);
     Assimp::DefaultLogger::kill();
   }
-  void write(const char* message) override {
-    if (first_.empty()) first_ = message;
+  void write(const char*) override {}
+  const std::string& first_error() const { return first_error_; }
+  // Each warning once, in the order first logged, with how often it came.
+  std::vector<std::string> warnings() const {
+    std::vector<std::string> out;
+    for (const auto& [text, count] : warnings_)
+      out.push_back(count == 1 ? text : text + " (" + std::to_string(count) + " times)");
+    return out;
   }
-  const std::string& first() const { return first_; }
 
  private:
-  std::string first_;
+  struct Severity : Assimp::LogStream {
+    Severity(MessageLog* log, bool error) : log_(log), error_(error) {}
+    void write(const char* message) override { log_->add(strip_assimp_prefix(message), error_); }
+    MessageLog* log_;
+    bool error_;
+  };
+  void add(const std::string& text, bool logged_as_error) {
+    const AssimpMessage kind = classify_assimp_message(text, logged_as_error);
+    if (kind == AssimpMessage::kIgnored) return;
+    if (kind == AssimpMessage::kError) {
+      if (first_error_.empty()) first_error_ = text;
+      return;
+    }
+    for (auto& [seen, count] : warnings_)
+      if (seen == text) {
+        ++count;
+        return;
+      }
+    warnings_.emplace_back(text, 1);
+  }
+  Severity warn_, err_;
+  std::string first_error_;
+  std::vector<std::pair<std::string, int>> warnings_;
+};
+
+// Files as usual, but never a material library: materials in model files
+// are not used, and a broken .mtl would otherwise fail a model that can be
+// drawn (a bad number, a file of 1-7 bytes). The OBJ pre-check warns about
+// missing libraries and names itself.
+class NoMaterialLibraries : public Assimp::DefaultIOSystem {
+ public:
+  bool Exists(const char* file) const override { return !is_library(file) && DefaultIOSystem::Exists(file); }
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    return is_library(file) ? nullptr : DefaultIOSystem::Open(file, mode);
+  }
+
+ private:
+  static bool is_library(const char* file) { return lower_extension(file) == ".mtl"; }
 };
 
 class MeshBuilder {
@@ -82,7 +130,12 @@ class MeshBuilder {
     for (unsigned i = 0; i < node.mNumChildren; ++i) add(scene, *node.mChildren[i], m);
   }
 
-  Mesh take() {
+  Mesh take(uint64_t file_polygons) {
+    // Some damage reaches no log (sim/io/README.md): the count is the check.
+    if (faces_read_ != file_polygons)
+      fail(path_, 0,
+           "assimp read " + std::to_string(faces_read_) + " polygons but the file has " + std::to_string(file_polygons) +
+               ": not drawn, since the picture would be wrong");
     if (mesh_.polygons.empty()) fail(path_, 0, "the model has no polygons (points and lines are not drawn)");
     return std::move(mesh_);
   }
@@ -100,7 +153,8 @@ class MeshBuilder {
     }
     for (unsigned f = 0; f < am.mNumFaces; ++f) {
       const aiFace& face = am.mFaces[f];
-      if (face.mNumIndices < 3) continue;
+      if (face.mNumIndices < 3) continue;  // points and lines
+      ++faces_read_;
       if (face.mNumIndices > kMaxPolygonVertices)
         fail(path_, 0, "face " + std::to_string(f) + " has " + std::to_string(face.mNumIndices) + " vertices (limit " +
                            std::to_string(kMaxPolygonVertices) + ")");
@@ -120,6 +174,7 @@ class MeshBuilder {
 
   std::string path_;
   Mesh mesh_;
+  uint64_t faces_read_ = 0;
   std::map<std::tuple<double, double, double>, int> index_;
 };
 
@@ -129,10 +184,10 @@ bool is_model_file(const std::string& path) { return is_checked_model_format(low
 
 void reject_other_model_formats(const std::string& path) {
   const std::string e = lower_extension(path);
-  if (!e.empty() && !is_model_file(path) && aiIsExtensionSupported(e.c_str()) == AI_TRUE) fail_format(path, e);
+  if (!e.empty() && !is_model_file(path) && Assimp::Importer().IsExtensionSupported(e)) fail_format(path, e);
 }
 
-Mesh import_model(const std::string& path) {
+Mesh import_model(const std::string& path, std::vector<std::string>& warnings) {
   std::error_code ec;
   if (!fs::exists(path, ec)) fail(path, 0, "no such file");
   if (!fs::is_regular_file(path, ec)) fail(path, 0, "not a regular file");
@@ -142,26 +197,23 @@ Mesh import_model(const std::string& path) {
   if (!std::ifstream(path)) fail(path, 0, "cannot open file");
   const std::string ext = lower_extension(path);
   if (!is_checked_model_format(ext)) fail_format(path, ext);
-  precheck_model(path, ext, size);
+  std::vector<std::string> found;  // the pre-check's first, then assimp's
+  const uint64_t file_polygons = precheck_model(path, ext, size, found);
 
   // No aiProcess_Triangulate: polygons must reach the GIRTD triangulator.
   const unsigned flags = aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
-  ErrorCapture errors;
-  const aiScene* scene = aiImportFile(path.c_str(), flags);
-  if (!scene || !scene->mRootNode) fail_assimp(path);
-  struct Release {
-    const aiScene* s;
-    ~Release() { aiReleaseImport(s); }
-  } release{scene};
-  if (!errors.first().empty()) {
-    std::string msg = errors.first();
-    while (!msg.empty() && std::isspace(static_cast<unsigned char>(msg.back()))) msg.pop_back();
-    const size_t colon = msg.find(": ");  // drop assimp's "Error, T0: " prefix
-    fail(path, 0, "cannot read the model: " + (colon == std::string::npos ? msg : msg.substr(colon + 2)));
-  }
+  MessageLog log;
+  Assimp::Importer importer;
+  importer.SetIOHandler(new NoMaterialLibraries);  // the importer owns it
+  const aiScene* scene = importer.ReadFile(path, flags);
+  if (!scene || !scene->mRootNode) fail_assimp(path, importer);
+  if (!log.first_error().empty()) fail(path, 0, "cannot read the model: " + log.first_error());
   MeshBuilder b(path);
   b.add(*scene, *scene->mRootNode, aiMatrix4x4());
-  return b.take();
+  Mesh mesh = b.take(file_polygons);
+  for (const std::string& w : log.warnings()) found.push_back(path + ": " + w);
+  warnings.insert(warnings.end(), found.begin(), found.end());
+  return mesh;
 }
 
 }  // namespace girtd

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "frontend/mesh.hpp"
 
@@ -18,7 +19,11 @@ inline constexpr size_t kMaxPolygonVertices = 65536;
 
 // Positions are merged when bit-identical, so polygons that share a corner
 // share an index (STL repeats every corner). Points and lines are skipped.
-Mesh import_model(const std::string& path);
+// What assimp could go on from without changing the geometry (a missing
+// .mtl, an unknown material: materials in model files are not used) is
+// appended to `warnings` as "FILE: what"; anything that would change the
+// positions or polygons is an InputError (sim/io/README.md lists which).
+Mesh import_model(const std::string& path, std::vector<std::string>& warnings);
 
 bool is_model_file(const std::string& path);  // by extension: .obj, .off, .ply, .stl (any case)
 

@@ -2,24 +2,30 @@
 // reads (OBJ, OFF, PLY, STL): every count in the file that would size an
 // allocation (header counts, PLY list lengths, OFF face sizes) is checked
 // against the limits and the bytes the file has, and the errors a text file
-// can place (a bad vertex index, a NaN coordinate) get their line. Throws
-// InputError "FILE:LINE: what" (no line for binary files: they have none;
-// the message gives the byte offset).
+// can place (a bad vertex index, a NaN coordinate) get their line; what
+// Debian's assimp 5.2.5 would read silently wrong is refused (each check
+// names the assimp behaviour it guards). Throws InputError "FILE:LINE: what"
+// or, for binary files, "FILE:@OFFSET: what".
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace girtd {
 
 // ".obj", ".off", ".ply", ".stl" (lower case): the formats with a check here.
 bool is_checked_model_format(const std::string& lower_ext);
 
-// Dispatches on the extension; `size` is the file's size in bytes.
-void precheck_model(const std::string& path, const std::string& lower_ext, uint64_t size);
+// Dispatches on the extension; `size` is the file's size in bytes. Returns
+// the polygons (faces of 3 or more corners) the file holds, for checking
+// what assimp returns against; appends what it can go on from (an OBJ's
+// missing material library) to `warnings`.
+uint64_t precheck_model(const std::string& path, const std::string& lower_ext, uint64_t size,
+                        std::vector<std::string>& warnings);
 
 // The PLY check (ply_precheck.cpp): header, then every element instance, so
-// no list length reaches assimp unchecked.
-void precheck_ply(const std::string& path, uint64_t size);
+// no list length reaches assimp unchecked. Returns the polygons.
+uint64_t precheck_ply(const std::string& path, uint64_t size);
 
 }  // namespace girtd

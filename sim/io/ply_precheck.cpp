@@ -113,6 +113,9 @@ PlyHeader read_header(const std::string& path, const std::string& data) {
         fail(path, no,
              "header claims " + count + " " + name + " elements, more than the file's " + std::to_string(data.size()) +
                  " bytes could hold");
+      // assimp 5.2.5 keeps only the last triangle of each strip (PlyLoader's
+      // tristrip loop writes every triangle to the same face).
+      if (name == "tristrips") fail(path, no, "triangle strips ('element tristrips') are not read: write faces instead");
       if (name == "face" && static_cast<uint64_t>(n) > kMaxModelPolygons)
         fail(path, no, "header claims " + count + " faces (limit " + std::to_string(kMaxModelPolygons) + ")");
       if (name == "vertex") h.vertices = static_cast<uint64_t>(n);
@@ -137,7 +140,9 @@ PlyHeader read_header(const std::string& path, const std::string& data) {
 std::string where(const PlyElement& e, uint64_t i) { return "element '" + e.name + "' " + std::to_string(i); }
 
 // ASCII: an instance per line (blank lines skipped, as assimp does).
-void walk_ascii(const std::string& path, const std::string& data, const PlyHeader& h) {
+// Returns the polygons (face lists of 3 or more indices) the file holds.
+uint64_t walk_ascii(const std::string& path, const std::string& data, const PlyHeader& h) {
+  uint64_t polygons = 0;
   size_t at = h.body;
   int no = h.body_line - 1;
   std::vector<std::string_view> tok;
@@ -181,6 +186,7 @@ void walk_ascii(const std::string& path, const std::string& data, const PlyHeade
           fail(path, no,
                where(e, i) + " claims " + std::to_string(n) + " values but its line has " +
                    std::to_string(tok.size() - t));
+        if (e.face_indices(p) && n >= 3) ++polygons;
         for (int64_t k = 0; k < n; ++k) {
           const std::string_view v = tok[t++];
           int64_t idx = 0;
@@ -191,6 +197,7 @@ void walk_ascii(const std::string& path, const std::string& data, const PlyHeade
         }
       }
     }
+  return polygons;
 }
 
 // Binary: values packed in the file's byte order.
@@ -199,7 +206,8 @@ class BinaryWalk {
   BinaryWalk(const std::string& path, const std::string& data, const PlyHeader& h)
       : path_(path), data_(data), at_(h.body), big_(h.format == PlyFormat::kBigEndian) {}
 
-  void run(const PlyHeader& h) {
+  // Returns the polygons (face lists of 3 or more indices) the file holds.
+  uint64_t run(const PlyHeader& h) {
     for (const PlyElement& e : h.elements) {
       bool lists = false;
       uint64_t row = 0;
@@ -209,24 +217,28 @@ class BinaryWalk {
       }
       if (!lists) {  // fixed-size instances: one check for all of them
         if (e.count > 0 && row > left() / e.count)
-          fail(path_, 0, "the file ends inside element '" + e.name + "' (" + std::to_string(e.count) + " x " +
-                             std::to_string(row) + " bytes from byte " + std::to_string(at_) + ")");
+          fail_at(at_, "the file ends inside element '" + e.name + "' (" + std::to_string(e.count) + " x " +
+                           std::to_string(row) + " bytes from here, " + std::to_string(left()) + " left)");
         at_ += e.count * row;
         continue;
       }
       for (uint64_t i = 0; i < e.count; ++i)
         for (const PlyProperty& p : e.properties) instance_value(h, e, i, p);
     }
+    return polygons_;
   }
 
  private:
   uint64_t left() const { return data_.size() - at_; }
 
+  [[noreturn]] void fail_at(uint64_t offset, const std::string& what) const {
+    throw InputError::at_byte(path_, offset, what);
+  }
+
   void need(uint64_t bytes, const PlyElement& e, uint64_t i) const {
     if (bytes > left())
-      fail(path_, 0,
-           "the file ends inside " + where(e, i) + " (at byte " + std::to_string(at_) + ", " + std::to_string(bytes) +
-               " bytes needed, " + std::to_string(left()) + " left)");
+      fail_at(at_, "the file ends inside " + where(e, i) + " (" + std::to_string(bytes) + " bytes needed, " +
+                       std::to_string(left()) + " left)");
   }
 
   // An integer value at the cursor (which moves past it).
@@ -251,24 +263,23 @@ class BinaryWalk {
     const uint64_t count_at = at_;
     const int64_t n = integer(p.count_type);
     if (n < 0 || static_cast<uint64_t>(n) > kMaxPolygonVertices)
-      fail(path_, 0,
-           where(e, i) + " (byte " + std::to_string(count_at) + ") lists " + std::to_string(n) + " values (limit " +
-               std::to_string(kMaxPolygonVertices) + ")");
+      fail_at(count_at, where(e, i) + " lists " + std::to_string(n) + " values (limit " +
+                            std::to_string(kMaxPolygonVertices) + ")");
     const uint64_t bytes = static_cast<uint64_t>(n) * static_cast<uint64_t>(p.type.size);
     if (bytes > left())
-      fail(path_, 0,
-           where(e, i) + " (byte " + std::to_string(count_at) + ") lists " + std::to_string(n) + " values: " +
-               std::to_string(bytes) + " bytes, but " + std::to_string(left()) + " are left");
+      fail_at(count_at, where(e, i) + " lists " + std::to_string(n) + " values: " + std::to_string(bytes) +
+                            " bytes, but " + std::to_string(left()) + " are left");
     if (!e.face_indices(p) || !p.type.integer) {
       at_ += bytes;
       return;
     }
+    if (n >= 3) ++polygons_;
     for (int64_t k = 0; k < n; ++k) {
+      const uint64_t index_at = at_;
       const int64_t idx = integer(p.type);
       if (idx < 0 || static_cast<uint64_t>(idx) >= h.vertices)
-        fail(path_, 0,
-             where(e, i) + ": vertex index " + std::to_string(idx) + " is out of range (the file has " +
-                 std::to_string(h.vertices) + " vertices, counted from 0)");
+        fail_at(index_at, where(e, i) + ": vertex index " + std::to_string(idx) + " is out of range (the file has " +
+                              std::to_string(h.vertices) + " vertices, counted from 0)");
     }
   }
 
@@ -276,19 +287,19 @@ class BinaryWalk {
   const std::string& data_;
   uint64_t at_;
   bool big_;
+  uint64_t polygons_ = 0;
 };
 
 }  // namespace
 
-void precheck_ply(const std::string& path, uint64_t size) {
+uint64_t precheck_ply(const std::string& path, uint64_t size) {
   std::ifstream in(path, std::ios::binary);
   std::string data;
   data.resize(static_cast<size_t>(size));
   in.read(data.data(), static_cast<std::streamsize>(size));
   data.resize(static_cast<size_t>(in.gcount()));
   const PlyHeader h = read_header(path, data);
-  if (h.format == PlyFormat::kAscii) walk_ascii(path, data, h);
-  else BinaryWalk(path, data, h).run(h);
+  return h.format == PlyFormat::kAscii ? walk_ascii(path, data, h) : BinaryWalk(path, data, h).run(h);
 }
 
 }  // namespace girtd

@@ -126,6 +126,7 @@ json make_report(const ReportContext& ctx, const RunStats& s, const Params& para
   r["wall_s"] = s.wall_s;
   r["image_sha256"] = ctx.image_sha256;
   r["not_modeled"] = ctx.not_modeled;
+  r["warnings"] = ctx.warnings;
   r["config"] = params.source;
   return r;
 }
@@ -209,6 +210,8 @@ std::string report_markdown(const json& r) {
       o << "| `" << it.key() << "` | " << it->dump() << " |\n";
   }
   o << "\nStages:\n\n" << stages_markdown(r.at("stages"), r.at("stage_order"));
+  o << "\nWarnings: " << (r.at("warnings").empty() ? "none" : "") << "\n";
+  for (const auto& w : r.at("warnings")) o << "\n- " << w.get<std::string>() << "\n";
   o << "\nNot modeled by this back end: " << (r.at("not_modeled").empty() ? "nothing" : "");
   for (const auto& k : r.at("not_modeled")) o << "`" << k.get<std::string>() << "` ";
   o << "\n";

@@ -17,6 +17,7 @@ struct ReportContext {
   std::string level;
   std::vector<std::string> not_modeled;
   std::string image_sha256;
+  std::vector<std::string> warnings;  // input the run went on from ("FILE: what")
 };
 
 nlohmann::json make_report(const ReportContext& ctx, const RunStats& s, const Params& params);

@@ -171,6 +171,7 @@ class SceneReader {
     Trace trace;
     trace.path = path_;
     trace.level = TraceLevel::kPolygon;
+    trace.warnings = warnings_;
     const bool has_frames = root_.contains("frames");
     const size_t n_frames = has_frames ? frames_count() : 1;
     check_corners(instances, n_frames, has_frames ? root / "frames" : root / "models");
@@ -338,14 +339,14 @@ class SceneReader {
 
   // A model file, imported once per scene; its errors are the scene's, at
   // the "file" key's line, with the model's own FILE:LINE after "model".
-  std::shared_ptr<const Mesh> mesh(const Ptr& file_ptr, std::map<std::string, std::shared_ptr<const Mesh>>& cache) const {
+  std::shared_ptr<const Mesh> mesh(const Ptr& file_ptr, std::map<std::string, std::shared_ptr<const Mesh>>& cache) {
     fs::path file = string(file_ptr);
     if (file.is_relative()) file = fs::path(path_).parent_path() / file;
     const std::string key = file.lexically_normal().string();
     if (!fs::exists(key)) fail(file_ptr, "model file " + key + " does not exist");
     if (!cache.count(key)) {
       try {
-        cache[key] = std::make_shared<const Mesh>(import_model(key));
+        cache[key] = std::make_shared<const Mesh>(import_model(key, warnings_));
       } catch (const InputError& e) {
         fail(file_ptr, "model " + e.formatted());
       }
@@ -444,6 +445,7 @@ class SceneReader {
 
   std::string path_, text_;
   const Params& params_;
+  std::vector<std::string> warnings_;  // the models' (each imported once)
   json root_;
   std::unique_ptr<JsonLines> lines_;
   double auto_focal_ = 0;
@@ -455,7 +457,8 @@ Trace read_scene(const std::string& path, const Params& params) { return SceneRe
 
 Trace scene_from_model(const std::string& path, const Params& params) {
   (void)params;
-  const Mesh mesh = import_model(path);
+  std::vector<std::string> warnings;
+  const Mesh mesh = import_model(path, warnings);
   Instance in;
   in.mesh = std::make_shared<const Mesh>(mesh);
   in.groups = surface_groups(mesh, kDefaultCreaseDeg);
@@ -463,6 +466,7 @@ Trace scene_from_model(const std::string& path, const Params& params) {
   Trace trace;
   trace.path = path;
   trace.level = TraceLevel::kPolygon;
+  trace.warnings = std::move(warnings);
   TraceFrame tf;
   tf.world.lights = default_lights();
   place({in}, tf.world);

@@ -30,6 +30,9 @@ struct Trace {
   std::string path;
   TraceLevel level = TraceLevel::kTriangle;
   std::vector<TraceFrame> frames;
+  // What the reader could go on from ("FILE: what"): each is printed as
+  // "warning: ..." and listed in report.json's "warnings".
+  std::vector<std::string> warnings;
   size_t primitive_count() const;
 };
 

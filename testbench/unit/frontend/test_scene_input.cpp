@@ -13,66 +13,57 @@
 #include "io/scene_reader.hpp"
 #include "io/trace_reader.hpp"
 #include "io/trace_writer.hpp"
+#include "input_test_support.hpp"
 
 using namespace girtd;
+using namespace girtd::test;
 
 namespace {
 
-const std::string kModels = std::string(GIRTD_SOURCE_DIR) + "/traces/models/";
-
-std::string temp_file(const std::string& name, const std::string& text) {
-  const std::string path = "/tmp/girtd_frontend_test_" + name;
-  std::ofstream(path) << text;
-  return path;
-}
-
-// The InputError's "FILE:LINE: what", or "" when nothing was thrown.
-template <typename F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.formatted();
-  }
-  return "";
+// A model that must import without a warning.
+Mesh import_clean(const std::string& path) {
+  std::vector<std::string> warnings;
+  Mesh mesh = import_model(path, warnings);
+  CHECK(warnings.empty());
+  return mesh;
 }
 
 }  // namespace
 
 TEST_CASE("model import: polygons stay polygons, corners are shared", "[frontend]") {
-  const Mesh cube = import_model(kModels + "cube.obj");
+  const Mesh cube = import_clean(kModels + "cube.obj");
   CHECK(cube.positions.size() == 8);
   REQUIRE(cube.polygons.size() == 6);
   CHECK(cube.polygons[0].size() == 4);
-  const Mesh off = import_model(kModels + "cube.off");
+  const Mesh off = import_clean(kModels + "cube.off");
   CHECK(off.polygons.size() == 6);
   // Binary STL repeats every corner: merged back to the sphere's 12 x 24 - ... = 266 positions
   // (2 poles + 11 rings x 24).
-  const Mesh stl = import_model(kModels + "sphere.stl");
+  const Mesh stl = import_clean(kModels + "sphere.stl");
   CHECK(stl.positions.size() == 2 + 11 * 24);
   CHECK(stl.polygons.size() == 2 * 24 + 2 * 240);
-  const Mesh ply = import_model(kModels + "sphere.ply");
+  const Mesh ply = import_clean(kModels + "sphere.ply");
   CHECK(ply.polygons.size() == 2 * 24 + 240);
 }
 
 TEST_CASE("model import: broken files are InputErrors naming the file", "[frontend]") {
-  CHECK(error_of([] { import_model(temp_file("empty.obj", "")); }) == "/tmp/girtd_frontend_test_empty.obj: empty file");
+  CHECK(error_of([] { import_clean(temp_file("empty.obj", "")); }) == "/tmp/girtd_frontend_test_empty.obj: empty file");
   // The line of the face (4) or vertex (2) at fault, found by the pre-scan.
-  CHECK(error_of([] { import_model(temp_file("idx.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")); }) ==
+  CHECK(error_of([] { import_clean(temp_file("idx.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")); }) ==
         "/tmp/girtd_frontend_test_idx.obj:4: vertex index 9 is out of range (the file has 3 vertices)");
-  CHECK(error_of([] { import_model(temp_file("neg.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n")); }) ==
+  CHECK(error_of([] { import_clean(temp_file("neg.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n")); }) ==
         "/tmp/girtd_frontend_test_neg.obj:3: vertex index -3 is out of range (2 vertices so far)");
-  CHECK(error_of([] { import_model(temp_file("idx.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n")); }) ==
+  CHECK(error_of([] { import_clean(temp_file("idx.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n")); }) ==
         "/tmp/girtd_frontend_test_idx.off:6: vertex index 5 is out of range (the file has 3 vertices, counted from 0)");
-  CHECK(error_of([] { import_model(temp_file("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n")); }) ==
+  CHECK(error_of([] { import_clean(temp_file("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n")); }) ==
         "/tmp/girtd_frontend_test_nan.obj:2: vertex 2 has a coordinate that is NaN or infinite");
-  CHECK(error_of([] { import_model(temp_file("inf.off", "OFF\n3 1 0\n0 0 0\n1 0 -1e999\n0 1 0\n3 0 1 2\n")); }) ==
+  CHECK(error_of([] { import_clean(temp_file("inf.off", "OFF\n3 1 0\n0 0 0\n1 0 -1e999\n0 1 0\n3 0 1 2\n")); }) ==
         "/tmp/girtd_frontend_test_inf.off:4: vertex 1 has a coordinate that is NaN or infinite");
   // assimp's OFF reader drops faces of more than 9 corners: refused, with the line.
-  CHECK(error_of([] { import_model(temp_file("ten.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n10 0 1 2 0 1 2 0 1 2 0\n")); })
+  CHECK(error_of([] { import_clean(temp_file("ten.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n10 0 1 2 0 1 2 0 1 2 0\n")); })
             .rfind("/tmp/girtd_frontend_test_ten.off:6: a face of 10 corners", 0) == 0);
   // A count far beyond what the file could hold is refused before assimp allocates for it.
-  CHECK(error_of([] { import_model(temp_file("huge.off", "OFF\n99999999999 1 0\n0 0 0\n")); }) ==
+  CHECK(error_of([] { import_clean(temp_file("huge.off", "OFF\n99999999999 1 0\n0 0 0\n")); }) ==
         "/tmp/girtd_frontend_test_huge.off:2: header claims 99999999999 vertices, more than the file's 26 bytes could hold");
 }
 
@@ -107,7 +98,7 @@ TEST_CASE("model import: only OBJ, OFF, PLY and STL, the formats pre-checked", "
   CHECK(is_model_file("m.off"));
   CHECK_FALSE(is_model_file("m.3ds"));
   CHECK_FALSE(is_model_file("m.fbx"));
-  CHECK(error_of([] { import_model(temp_file("m.3ds", "xyz")); }) ==
+  CHECK(error_of([] { import_clean(temp_file("m.3ds", "xyz")); }) ==
         "/tmp/girtd_frontend_test_m.3ds: model format '.3ds' is not read: OBJ, OFF, PLY and STL are (their counts are "
         "checked before import)");
   CHECK(error_of([] { reject_other_model_formats("whatever.fbx"); }).rfind("whatever.fbx: model format '.fbx'", 0) == 0);
@@ -118,31 +109,32 @@ TEST_CASE("model import: PLY list lengths are checked before assimp allocates fo
   // Valid binary files in both byte orders: a quad and a triangle.
   for (bool big : {false, true}) {
     const std::string path = temp_file(big ? "be.ply" : "le.ply", binary_ply(big, {{4, 0, 1, 2, 3}, {3, 0, 1, 2}}));
-    const Mesh m = import_model(path);
+    const Mesh m = import_clean(path);
     CHECK(m.positions.size() == 4);
     REQUIRE(m.polygons.size() == 2);
     CHECK(m.polygons[0].size() == 4);
   }
   // 10^8 indices claimed in a 200-byte file (assimp took 800 MB for it).
-  CHECK(error_of([] { import_model(temp_file("huge.ply", binary_ply(false, {{100000000, 0, 1, 2}}))); }) ==
-        "/tmp/girtd_frontend_test_huge.ply: element 'face' 0 (byte 216) lists 100000000 values (limit 65536)");
+  CHECK(error_of([] { import_clean(temp_file("huge.ply", binary_ply(false, {{100000000, 0, 1, 2}}))); }) ==
+        "/tmp/girtd_frontend_test_huge.ply:@216: element 'face' 0 lists 100000000 values (limit 65536)");
   // Within the limit but more than the bytes left: 1000 x 4 bytes, 12 left.
-  CHECK(error_of([] { import_model(temp_file("short.ply", binary_ply(false, {{1000, 0, 1, 2}}))); }) ==
-        "/tmp/girtd_frontend_test_short.ply: element 'face' 0 (byte 216) lists 1000 values: 4000 bytes, but 12 are left");
-  CHECK(error_of([] { import_model(temp_file("bidx.ply", binary_ply(true, {{3, 0, 1, 4}}))); }) ==
-        "/tmp/girtd_frontend_test_bidx.ply: element 'face' 0: vertex index 4 is out of range (the file has 4 vertices, "
+  CHECK(error_of([] { import_clean(temp_file("short.ply", binary_ply(false, {{1000, 0, 1, 2}}))); }) ==
+        "/tmp/girtd_frontend_test_short.ply:@216: element 'face' 0 lists 1000 values: 4000 bytes, but 12 are left");
+  CHECK(error_of([] { import_clean(temp_file("bidx.ply", binary_ply(true, {{3, 0, 1, 4}}))); }) ==
+        // big-endian header 165 bytes + 4 x 12 vertex bytes + the count + two indices = byte 225
+        "/tmp/girtd_frontend_test_bidx.ply:@225: element 'face' 0: vertex index 4 is out of range (the file has 4 vertices, "
         "counted from 0)");
   // ASCII: the line of the instance.
   const std::string head =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
       "property list uint int vertex_indices\nend_header\n0 0 0\n1 0 0\n\n0 1 0\n";
-  CHECK(error_of([&] { import_model(temp_file("long.ply", head + "4000000000 0 1 2\n")); }) ==
+  CHECK(error_of([&] { import_clean(temp_file("long.ply", head + "4000000000 0 1 2\n")); }) ==
         "/tmp/girtd_frontend_test_long.ply:14: element 'face' 0 lists 4000000000 values (limit 65536)");
-  CHECK(error_of([&] { import_model(temp_file("few.ply", head + "5 0 1 2\n")); }) ==
+  CHECK(error_of([&] { import_clean(temp_file("few.ply", head + "5 0 1 2\n")); }) ==
         "/tmp/girtd_frontend_test_few.ply:14: element 'face' 0 claims 5 values but its line has 3");
-  CHECK(error_of([&] { import_model(temp_file("blank.ply", head + "3 0 1 2\n")); }) == "");  // the head itself is fine
+  CHECK(error_of([&] { import_clean(temp_file("blank.ply", head + "3 0 1 2\n")); }) == "");  // the head itself is fine
   CHECK(error_of([&] {
-          import_model(temp_file("nanv.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+          import_clean(temp_file("nanv.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                                              "property float z\nend_header\n0 0 0\n1 inf 0\n0 1 0\n"));
         }) == "/tmp/girtd_frontend_test_nanv.ply:9: vertex 1 has a coordinate that is NaN or infinite");
 }

@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# The real-world model corpus (traces/models/corpus/, manifest corpus.tsv):
+# every file renders on golden, approx and rtl with exit 0 and the same frame
+# on all three; that frame is its twin's (the same shape written without the
+# feature) or the stored, blessed image_sha256; a file with a twin has the
+# twin's triangles_in (a face dropped where nobody sees it still counts);
+# `warning` rows warn on stderr and in report.json, `ok` rows do neither;
+# something was drawn (pixels_written > 1000).
+# Usage: test_model_corpus.sh GIRTD_BINARY REPO_ROOT
+source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh" "$1" "$2"
+
+CORPUS=traces/models/corpus
+MANIFEST=$CORPUS/corpus.tsv
+BACKENDS=(golden approx rtl)
+
+# A top-level key of report.json (written with 2-space indent): its value.
+report_value() {  # REPORT KEY
+  sed -n 's/^  "'"$2"'": "\{0,1\}\([^",]*\)"\{0,1\},\{0,1\}$/\1/p' "$1"
+}
+
+files=() twins=() expects=() shas=()
+while IFS=$'\t' read -r file twin expect what stored; do
+  [[ -z "$file" || "$file" == \#* ]] && continue
+  files+=("$file") twins+=("$twin") expects+=("$expect") shas+=("$stored")
+  [[ -f "$CORPUS/$file" ]] && ok || bad "$file: listed in corpus.tsv but missing"
+  [[ "$expect" == ok || "$expect" == warning ]] && ok || bad "$file: expect '$expect' is neither ok nor warning"
+  [[ -n "$what" ]] && ok || bad "$file: no description"
+  [[ "$twin" == - || "$stored" == - ]] && ok || bad "$file: both a twin and a stored sha"
+done < "$MANIFEST"
+[[ ${#files[@]} -gt 0 ]] && ok || bad "no rows in $MANIFEST"
+
+# Every model file of the corpus is in the manifest.
+for path in "$CORPUS"/*.obj "$CORPUS"/*.off "$CORPUS"/*.ply "$CORPUS"/*.stl; do
+  name=$(basename "$path")
+  printf '%s\n' "${files[@]}" | grep -qxF "$name" && ok || bad "$name: not in corpus.tsv"
+done
+# house_nomtl.obj's mtllib names a missing file; assimp would quietly fall
+# back to house_nomtl.mtl beside it.
+[[ ! -e "$CORPUS/house_nomtl.mtl" ]] && ok || bad "house_nomtl.mtl exists: assimp would use it as a fallback"
+
+declare -A golden_sha golden_tris
+for i in "${!files[@]}"; do
+  f=${files[$i]}
+  [[ -f "$CORPUS/$f" ]] || continue
+  first_sha=""
+  for b in "${BACKENDS[@]}"; do
+    out="$TMP/$f.$b"
+    "$GIRTD" render "$CORPUS/$f" --backend "$b" --out "$out" --quiet 2> "$out.err"; rc=$?
+    if [[ $rc -ne 0 || ! -f "$out/report.json" ]]; then
+      bad "$f on $b: exit $rc: $(head -c 300 "$out.err")"
+      continue
+    fi
+    ok
+    sha=$(report_value "$out/report.json" image_sha256)
+    if [[ -z "$first_sha" ]]; then first_sha=$sha
+    else [[ "$sha" == "$first_sha" ]] && ok || bad "$f: $b frame $sha differs from ${BACKENDS[0]}'s $first_sha"; fi
+    if [[ ${expects[$i]} == warning ]]; then
+      grep '^warning: ' "$out.err" | grep -qF "$CORPUS/$f" && ok || bad "$f on $b: no 'warning: ' line naming the file on stderr"
+      grep -q '^  "warnings": \[$' "$out/report.json" && ok || bad "$f on $b: report.json warnings is empty"
+    else
+      ! grep -q '^warning: ' "$out.err" && ok || bad "$f on $b: unexpected $(grep -m1 '^warning: ' "$out.err")"
+      grep -q '^  "warnings": \[\]' "$out/report.json" && ok || bad "$f on $b: report.json warnings is not empty"
+    fi
+    if [[ $b == golden ]]; then
+      golden_sha[$f]=$sha
+      golden_tris[$f]=$(report_value "$out/report.json" triangles_in)
+      pixels=$(report_value "$out/report.json" pixels_written)
+      [[ "${pixels:-0}" -gt 1000 ]] && ok || bad "$f: pixels_written ${pixels:-none}: nothing drawn"
+    fi
+  done
+done
+
+# Twins and stored frames (twins may come later in the manifest).
+for i in "${!files[@]}"; do
+  f=${files[$i]} twin=${twins[$i]} stored=${shas[$i]}
+  [[ -n "${golden_sha[$f]:-}" ]] || continue
+  if [[ $twin != - ]]; then
+    if [[ -z "${golden_sha[$twin]:-}" ]]; then bad "$f: twin $twin has no golden frame (not in corpus.tsv, or it failed)"; continue; fi
+    [[ "${golden_sha[$f]}" == "${golden_sha[$twin]}" ]] && ok ||
+      bad "$f: frame ${golden_sha[$f]} differs from its twin $twin's ${golden_sha[$twin]}"
+    [[ "${golden_tris[$f]}" == "${golden_tris[$twin]}" ]] && ok ||
+      bad "$f: triangles_in ${golden_tris[$f]}, its twin $twin's ${golden_tris[$twin]}"
+  fi
+  if [[ $stored != - ]]; then
+    [[ "${golden_sha[$f]}" == "$stored" ]] && ok ||
+      bad "$f: frame ${golden_sha[$f]} is not the stored $stored (re-bless: traces/models/README.md)"
+  fi
+done
+
+finish

@@ -1,0 +1,142 @@
+// Model files that assimp reads with something to say: each class of
+// sim/io/README.md's table with a small file of ours. A warning leaves the
+// polygons exactly as the file has them; an error refuses the model.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <cstring>
+
+#include "input_test_support.hpp"
+#include "io/assimp_messages.hpp"
+
+using namespace girtd;
+using namespace girtd::test;
+
+namespace {
+
+const std::string kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\n";
+
+struct Imported {
+  Mesh mesh;
+  std::vector<std::string> warnings;
+};
+
+Imported import(const std::string& path) {
+  Imported m;
+  m.mesh = import_model(path, m.warnings);
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("model messages: a missing material library is one warning, and the model is drawn", "[frontend]") {
+  const std::string path = temp_file("nomtl.obj", "mtllib gone.mtl\n" + kTriangle +
+                                                      "usemtl red\nf 1 2 3\nusemtl blue\nf 2 4 3\n");
+  const Imported m = import(path);
+  CHECK(m.mesh.polygons.size() == 2);
+  REQUIRE(m.warnings.size() == 1);  // not one per usemtl
+  CHECK(m.warnings[0].rfind(path + ":1: material library 'gone.mtl' not found", 0) == 0);
+}
+
+TEST_CASE("model messages: usemtl of an unknown name is a warning once per name", "[frontend]") {
+  temp_file("lib.mtl", "newmtl red\nKd 1 0 0\n");
+  const std::string path = temp_file("usemtl.obj", "mtllib girtd_frontend_test_lib.mtl\n" + kTriangle +
+                                                       "usemtl red\nf 1 2 3\nusemtl nosuch\nf 2 4 3\nusemtl nosuch\n"
+                                                       "f 1 4 3\n");
+  const Imported m = import(path);
+  CHECK(m.mesh.polygons.size() == 3);
+  REQUIRE(m.warnings.size() == 1);
+  CHECK(m.warnings[0].rfind(path + ":8: usemtl 'nosuch' names no material", 0) == 0);
+}
+
+TEST_CASE("model messages: a broken material library does not stop the model (assimp never reads it)", "[frontend]") {
+  temp_file("broken.mtl", "newmtl m\nKd x y z\n");  // assimp 5.2.5 would fail the whole import on the bad number
+  const Imported m = import(temp_file("brokenmtl.obj", "mtllib girtd_frontend_test_broken.mtl\n" + kTriangle +
+                                                           "usemtl m\nf 1 2 3\n"));
+  CHECK(m.mesh.polygons.size() == 1);
+  CHECK(m.warnings.empty());
+}
+
+TEST_CASE("model messages: an empty face is a warning (assimp's Err), the rest is drawn", "[frontend]") {
+  const std::string path = temp_file("emptyface.obj", kTriangle + "f\nf 1 2 3\n");
+  const Imported m = import(path);
+  CHECK(m.mesh.polygons.size() == 1);
+  CHECK(m.warnings == std::vector<std::string>{path + ": Obj: Ignoring empty face"});
+}
+
+TEST_CASE("model messages: an Err after which geometry is lost refuses the model", "[frontend]") {
+  // OFF: a comment line among the faces is read as a face of 0 corners, and the last face is lost.
+  const std::string off = temp_file("comment.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n# faces\n3 0 1 2\n3 1 3 2\n");
+  CHECK(error_of([&] { import(off); }) == off + ": cannot read the model: OFF: Faces with zero indices aren't allowed");
+  // STL: a fourth vertex in a facet is dropped.
+  const std::string stl = temp_file("quad.stl", "solid q\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                                                "vertex 1 1 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid q\n");
+  CHECK(error_of([&] { import(stl); }) ==
+        stl + ": cannot read the model: STL: a facet with more than 3 vertices has been found");
+}
+
+TEST_CASE("model messages: what assimp 5.2.5 would misread without a word is refused with its line", "[frontend]") {
+  CHECK(error_of([] { import(temp_file("bom.obj", "\xEF\xBB\xBF" + kTriangle + "f 1 2 3\n")); }) ==
+        "/tmp/girtd_frontend_test_bom.obj:1: the file starts with a UTF-8 byte-order mark (assimp 5.2.5 would lose its "
+        "first statement)");
+  CHECK(error_of([] { import(temp_file("indent.obj", "v 0 0 0\n  v 1 0 0\nv 0 1 0\nf 1 2 3\n")); }) ==
+        "/tmp/girtd_frontend_test_indent.obj:2: an indented statement (assimp 5.2.5 skips it): remove the leading white "
+        "space");
+  CHECK(error_of([] { import(temp_file("v5.obj", "v 0 0 0 1 1\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); }) ==
+        "/tmp/girtd_frontend_test_v5.obj:1: a vertex of 5 numbers (assimp 5.2.5 reads x y z, x y z w or x y z r g b)");
+  CHECK(error_of([] { import(temp_file("dot.obj", "v .5 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); }) ==
+        "/tmp/girtd_frontend_test_dot.obj:1: '.5' (assimp 5.2.5 skips a number that starts with '.': write 0.5)");
+  CHECK(error_of([] { import(temp_file("zero.obj", kTriangle + "f 01 2 3\n")); }) ==
+        "/tmp/girtd_frontend_test_zero.obj:5: index '01' (assimp 5.2.5 reads a leading '0' or '+' as an extra corner)");
+  CHECK(error_of([] { import(temp_file("cont.obj", kTriangle + "f 1 2 \\\n\nf 1 2 3\n")); }) ==
+        "/tmp/girtd_frontend_test_cont.obj:6: a '\\' continuation runs into an empty line (assimp 5.2.5 would lose the "
+        "next statement)");
+  CHECK(error_of([] {
+          import(temp_file("strips.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                         "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
+                                         "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+        }) == "/tmp/girtd_frontend_test_strips.ply:7: triangle strips ('element tristrips') are not read: write faces "
+              "instead");
+}
+
+TEST_CASE("model messages: a continuation joins lines as assimp does", "[frontend]") {
+  // "f 1 2 \" + "3": the face 1 2 3, the same polygons as the joined file.
+  const Imported m = import(temp_file("joined.obj", kTriangle + "f 1 2 \\\n3\nf 2 \\\n 4 3\n"));
+  CHECK(m.mesh.polygons.size() == 2);
+  CHECK(m.warnings.empty());
+}
+
+TEST_CASE("model messages: polygons lost without a word are caught by the count", "[frontend]") {
+  // Binary PLY whose first body byte is '\n': assimp 5.2.5 erases it, every
+  // value after it slides, and it returns no face with no message.
+  const std::string head =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string body;
+  auto put = [&](uint32_t v, int bytes) {
+    for (int k = 0; k < bytes; ++k) body += static_cast<char>(v >> (8 * k));
+  };
+  for (uint32_t bits : {0x3F80000Au, 0u, 0u, 0u, 0x3F800000u, 0u, 0u, 0u, 0x3F800000u}) put(bits, 4);  // x = 1.0000012
+  put(3, 1);
+  for (uint32_t i : {0u, 1u, 2u}) put(i, 4);
+  const std::string path = temp_file("newline.ply", head + body);
+  CHECK(error_of([&] { import(path); }) ==
+        path + ": assimp read 0 polygons but the file has 1: not drawn, since the picture would be wrong");
+}
+
+TEST_CASE("model messages: the sorting table", "[frontend]") {
+  CHECK(classify_assimp_message("OBJ: Unable to locate material file a.mtl", true) == AssimpMessage::kIgnored);
+  CHECK(classify_assimp_message("OBJ: failed to locate material red, creating new material", true) ==
+        AssimpMessage::kIgnored);
+  CHECK(classify_assimp_message("Obj: Ignoring empty face", true) == AssimpMessage::kWarning);
+  CHECK(classify_assimp_message("OFF: Vertex index is out of range", true) == AssimpMessage::kError);
+  CHECK(classify_assimp_message("something new in a later assimp", true) == AssimpMessage::kError);
+  CHECK(classify_assimp_message("Unable to parse property instance. Skipping this element instance", false) ==
+        AssimpMessage::kError);
+  CHECK(classify_assimp_message("Validation warning: There are unreferenced vertices", false) ==
+        AssimpMessage::kIgnored);
+  CHECK(classify_assimp_message("STL: unexpected EOF. 'endsolid' keyword was expected", false) ==
+        AssimpMessage::kWarning);
+  CHECK(strip_assimp_prefix("Warn,  T0: OBJ: x \n") == "OBJ: x");
+  CHECK(strip_assimp_prefix("Error, T0: OFF: y") == "OFF: y");
+}
