@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/input_error.hpp"
+#include "common/json_text.hpp"
 #include "girtd/default_config.hpp"
 
 namespace girtd {
@@ -183,15 +184,11 @@ Params Params::with_thesis_formats() const {
 }
 
 Params Params::from_file(const std::string& path) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open configuration file");
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw InputError(path, 0, std::string("not valid JSON: ") + e.what());
-  }
-  return with_overrides(j, path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return with_overrides(parse_json_text(text.str(), path), path);
 }
 
 }  // namespace girtd

@@ -223,6 +223,7 @@ uint64_t precheck_off(const std::string& path, uint64_t size) {
   // edges), read across lines as assimp does, with their lines.
   const bool keyword = tok[0].size() >= 3 && tok[0].substr(tok[0].size() - 3) == "OFF";
   const bool dimension = keyword && tok[0].find('n') != std::string_view::npos;
+  const bool coff = tok[0] == "COFF";
   std::vector<std::pair<std::string, int>> header;
   const size_t wanted = 3 + (dimension ? 1 : 0);
   for (size_t at = keyword ? 1 : 0; header.size() < wanted; ++at) {
@@ -253,6 +254,10 @@ uint64_t precheck_off(const std::string& path, uint64_t size) {
     if (!lines.next(tok))
       fail(path, lines.line(), "the file ends after " + std::to_string(v) + " of its " + vertices_text(vertices));
     for (size_t k = 0; k < tok.size() && k < 3; ++k) check_finite(path, lines.line(), v, tok[k]);
+    // COFF colours are RGBA; assimp 5.2.5 throws a cryptic parse error on fewer.
+    if (coff && tok.size() < 7)
+      fail(path, lines.line(), "a COFF vertex is x y z and 4 colour values (RGBA); this one has " +
+                                   std::to_string(tok.size()) + " numbers");
   }
   for (int64_t f = 0; f < faces; ++f) {
     if (!lines.next(tok))

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/input_error.hpp"
+#include "common/json_text.hpp"
 #include "frontend/rotation.hpp"
 #include "frontend/surface_groups.hpp"
 #include "frontend/view_transform.hpp"
@@ -115,15 +116,7 @@ class SceneReader {
     ss << in.rdbuf();
     text_ = ss.str();
     check_json_nesting(text_, path);
-    try {
-      root_ = json::parse(text_);
-    } catch (const json::parse_error& e) {
-      const size_t upto = std::min<size_t>(e.byte > 0 ? e.byte - 1 : 0, text_.size());
-      const int line = 1 + static_cast<int>(std::count(text_.begin(), text_.begin() + static_cast<long>(upto), '\n'));
-      std::string what = e.what();
-      const size_t colon = what.find("syntax error");
-      throw InputError(path, line, "invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon)));
-    }
+    root_ = parse_json_text(text_, path);
     lines_ = std::make_unique<JsonLines>(text_);
   }
 

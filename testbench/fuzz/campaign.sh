@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# A fuzz campaign: each target for 10^6 executions or 10 minutes, whichever
+# comes first (override: RUNS=..., SECONDS_PER_TARGET=...), one at a time.
+#   testbench/fuzz/campaign.sh [BUILD_DIR] [TARGET...]
+# Needs the fuzz sub-build (build/fuzz, made by the main build). Prints a
+# row per target (executions, coverage, features, corpus, outcome) and
+# leaves the grown corpus in BUILD/fuzz/work/TARGET and any crash, leak or
+# timeout input in BUILD/fuzz/artifacts/TARGET/; a fixed one goes into
+# testbench/fuzz/regressions/TARGET/ so CTest replays it from then on.
+set -uo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+BUILD="${1:-$ROOT/build}"
+shift || true
+TARGETS=("$@")
+((${#TARGETS[@]})) || TARGETS=(trace scene config obj off ply stl)
+RUNS="${RUNS:-1000000}"
+SECONDS_PER_TARGET="${SECONDS_PER_TARGET:-600}"
+
+seeds() {
+  case "$1" in
+    trace) echo "$ROOT/traces" ;;
+    scene) echo "$ROOT/traces/scenes" ;;
+    config) echo "$ROOT/config" ;;
+    *) echo "$ROOT/traces/models" ;;
+  esac
+}
+
+printf '| target | executions | seconds | coverage (edges) | features | corpus | outcome |\n|---|---|---|---|---|---|---|\n'
+for t in "${TARGETS[@]}"; do
+  bin="$BUILD/fuzz/bin/fuzz_$t"
+  [[ -x "$bin" ]] || { echo "no $bin: build first (tools/girtd build)" >&2; exit 2; }
+  work="$BUILD/fuzz/work/$t" art="$BUILD/fuzz/artifacts/$t"
+  mkdir -p "$work" "$art"
+  dirs=("$work" $(seeds "$t"))
+  for kind in corpus regressions; do [[ -d "$ROOT/testbench/fuzz/$kind/$t" ]] && dirs+=("$ROOT/testbench/fuzz/$kind/$t"); done
+  log="$BUILD/fuzz/work/$t.log"
+  start=$(date +%s)
+  "$bin" -runs="$RUNS" -max_total_time="$SECONDS_PER_TARGET" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
+    -print_final_stats=1 -artifact_prefix="$art/" "${dirs[@]}" >"$log" 2>&1
+  rc=$?
+  secs=$(( $(date +%s) - start ))
+  execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')
+  last=$(grep -E '^#[0-9]+' "$log" | tail -1)
+  cov=$(grep -o 'cov: [0-9]*' <<<"$last" | grep -o '[0-9]*')
+  ft=$(grep -o 'ft: [0-9]*' <<<"$last" | grep -o '[0-9]*')
+  corp=$(grep -o 'corp: [0-9]*/[0-9a-zA-Z]*' <<<"$last" | cut -d' ' -f2)
+  outcome="clean"
+  ((rc != 0)) && outcome="FOUND: $(grep -m1 -oE 'ERROR: [A-Za-z]+: [a-z-]+|deadly signal|timeout|out-of-memory|runtime error' "$log" || echo "exit $rc") (see $log)"
+  printf '| %s | %s | %s | %s | %s | %s | %s |\n' "$t" "${execs:-?}" "$secs" "${cov:-?}" "${ft:-?}" "${corp:-?}" "$outcome"
+done
