@@ -35,5 +35,6 @@ foreach(target trace scene config obj off ply stl)
   endforeach()
   add_test(NAME "fuzz: replay ${target}" COMMAND ${GIRTD_FUZZ_BUILD}/bin/fuzz_${target} -runs=0 ${_dirs})
   set_tests_properties("fuzz: replay ${target}" PROPERTIES LABELS fuzz
-                       FAIL_REGULAR_EXPRESSION "ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:")
+                       FAIL_REGULAR_EXPRESSION "ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:"
+                       ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/testbench/fuzz/lsan.supp:print_suppressions=0")
 endforeach()

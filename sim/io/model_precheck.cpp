@@ -35,7 +35,9 @@ void check_finite(const std::string& path, int line, int64_t vertex, std::string
 // getNextDataLine), and a statement keeps the line it starts on.
 class ObjStatements {
  public:
-  explicit ObjStatements(const std::string& path) : path_(path), in_(path, std::ios::binary) {}
+  // `warnings`, when given, is told of a continuation that glues two tokens.
+  explicit ObjStatements(const std::string& path, std::vector<std::string>* warnings = nullptr)
+      : path_(path), in_(path, std::ios::binary), warnings_(warnings) {}
   bool next(std::string& statement) {
     if (!std::getline(in_, line_)) return false;
     start_ = ++no_;
@@ -48,8 +50,13 @@ class ObjStatements {
       }
       line_.pop_back();
       statement += line_;
+      const bool glued_before = !line_.empty() && !std::isspace(static_cast<unsigned char>(line_.back()));
       if (!std::getline(in_, line_)) return true;
       ++no_;
+      if (warnings_ && glued_before && !line_.empty() && !std::isspace(static_cast<unsigned char>(line_[0])))
+        warnings_->push_back(path_ + ":" + std::to_string(no_ - 1) +
+                             ": a '\\' continuation with no space on either side joins two tokens into one (as "
+                             "assimp 5.2.5 reads it: \"1\\\" + \"2\" is 12)");
       // assimp copies the first character after the joined line end unchecked:
       // an empty line there swallows the statement after it.
       if (line_.empty() || line_ == "\r")
@@ -61,6 +68,7 @@ class ObjStatements {
  private:
   const std::string& path_;
   std::ifstream in_;
+  std::vector<std::string>* warnings_;
   std::string line_;
   int no_ = 0, start_ = 0;
 };
@@ -157,7 +165,7 @@ uint64_t precheck_obj(const std::string& path, std::vector<std::string>& warning
       }
     }
   }
-  ObjStatements statements(path);
+  ObjStatements statements(path, &warnings);
   ObjMaterials materials(path, warnings);
   int64_t seen = 0;
   uint64_t polygons = 0;
@@ -285,11 +293,18 @@ uint64_t precheck_off(const std::string& path, uint64_t size) {
 }
 
 // Returns the triangles: a binary file's count, an ASCII file's facets.
+// Binary or ASCII is told as assimp 5.2.5 tells it (STLLoader's IsBinarySTL
+// first): binary when the size is 84 + 50 x the count at byte 80, whatever
+// the header's text ("solid" starts many binary headers), else ASCII when it
+// starts with "solid".
 uint64_t precheck_stl(const std::string& path, uint64_t size) {
   std::ifstream in(path, std::ios::binary);
   char head[84] = {};
   in.read(head, sizeof head);
-  if (std::string(head, 5) == "solid") {  // ASCII STL: no counts
+  uint32_t n = 0;
+  for (int i = 3; i >= 0; --i) n = (n << 8) | static_cast<unsigned char>(head[80 + i]);
+  const bool binary = in.gcount() == 84 && 84 + 50 * uint64_t{n} == size;
+  if (!binary && std::string(head, 5) == "solid") {
     std::ifstream text(path, std::ios::binary);
     std::string line;
     std::vector<std::string_view> tok;
@@ -303,9 +318,7 @@ uint64_t precheck_stl(const std::string& path, uint64_t size) {
   if (in.gcount() < 84)
     throw InputError::at_byte(path, static_cast<uint64_t>(in.gcount()),
                               "binary STL shorter than its 84-byte header (80 bytes of text, a 4-byte triangle count)");
-  uint32_t n = 0;
-  for (int i = 3; i >= 0; --i) n = (n << 8) | static_cast<unsigned char>(head[80 + i]);
-  if (84 + 50 * uint64_t{n} != size)
+  if (!binary)
     throw InputError::at_byte(path, 80,
                               "binary STL claims " + std::to_string(n) + " triangles (" +
                                   std::to_string(84 + 50 * uint64_t{n}) + " bytes) but the file has " +

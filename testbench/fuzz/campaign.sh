@@ -14,6 +14,7 @@ shift || true
 TARGETS=("$@")
 ((${#TARGETS[@]})) || TARGETS=(trace scene config obj off ply stl)
 RUNS="${RUNS:-1000000}"
+export LSAN_OPTIONS="suppressions=$ROOT/testbench/fuzz/lsan.supp:print_suppressions=0"
 SECONDS_PER_TARGET="${SECONDS_PER_TARGET:-600}"
 
 seeds() {

@@ -8,6 +8,7 @@
 
 #include "input_test_support.hpp"
 #include "io/assimp_messages.hpp"
+#include "io/scene_reader.hpp"
 
 using namespace girtd;
 using namespace girtd::test;
@@ -104,6 +105,15 @@ TEST_CASE("model messages: a continuation joins lines as assimp does", "[fronten
   const Imported m = import(temp_file("joined.obj", kTriangle + "f 1 2 \\\n3\nf 2 \\\n 4 3\n"));
   CHECK(m.mesh.polygons.size() == 2);
   CHECK(m.warnings.empty());
+  // "f 1\" + "2 3 4": assimp reads "f 12 3 4", a triangle, not a quad: drawn, with a warning.
+  std::string twelve;
+  for (int i = 0; i < 12; ++i) twelve += "v " + std::to_string(i % 3) + " " + std::to_string(i / 3) + " " + std::to_string(i % 2) + "\n";
+  const std::string path = temp_file("glued.obj", twelve + "f 1\\\n2 3 4\n");
+  const Imported g = import(path);
+  REQUIRE(g.mesh.polygons.size() == 1);
+  CHECK(g.mesh.polygons[0].size() == 3);
+  REQUIRE(g.warnings.size() == 1);
+  CHECK(g.warnings[0].rfind(path + ":13: a '\\' continuation with no space on either side joins two tokens", 0) == 0);
 }
 
 TEST_CASE("model messages: polygons lost without a word are caught by the count", "[frontend]") {
@@ -139,4 +149,14 @@ TEST_CASE("model messages: the sorting table", "[frontend]") {
         AssimpMessage::kWarning);
   CHECK(strip_assimp_prefix("Warn,  T0: OBJ: x \n") == "OBJ: x");
   CHECK(strip_assimp_prefix("Error, T0: OFF: y") == "OFF: y");
+}
+
+TEST_CASE("model messages: a scene passes on its models' warnings, once per model file", "[frontend]") {
+  const std::string obj = temp_file("scene_nomtl.obj", "mtllib gone.mtl\n" + kTriangle + "f 1 2 3\n");
+  const std::string scene = temp_file(
+      "warn_scene.json", R"({"girtd_scene": 1, "models": [{"name": "a", "file": "girtd_frontend_test_scene_nomtl.obj"},
+                                               {"name": "b", "file": "girtd_frontend_test_scene_nomtl.obj"}]})");
+  const Trace t = read_scene(scene, Params::defaults());
+  REQUIRE(t.warnings.size() == 1);
+  CHECK(t.warnings[0].rfind(obj + ":1: material library 'gone.mtl' not found", 0) == 0);
 }
