@@ -31,7 +31,8 @@ constexpr const char* kQuietWarnings[] = {
 
 // Err messages after which the positions and faces are still the file's.
 constexpr const char* kHarmlessErrors[] = {
-    "Obj: Ignoring empty face",  // an "f" with no corners
+    "Obj: Ignoring empty face",                       // an "f" with no corners
+    "Obj: Separator unexpected in point statement",  // "p 1/2": a point, never drawn
 };
 
 // Warn messages that mean a value or a face is not what the file says.

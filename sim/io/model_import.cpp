@@ -20,6 +20,7 @@
 #include "frontend/polygon_shape.hpp"
 #include "io/assimp_messages.hpp"
 #include "io/model_precheck.hpp"
+#include "io/model_tokens.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -32,7 +33,6 @@ std::string lower_extension(const std::string& path) {
   return e;
 }
 
-[[noreturn]] void fail(const std::string& path, int line, const std::string& what) { throw InputError(path, line, what); }
 
 [[noreturn]] void fail_format(const std::string& path, const std::string& ext) {
   fail(path, 0,
@@ -134,8 +134,8 @@ class MeshBuilder {
     // Some damage reaches no log (sim/io/README.md): the count is the check.
     if (faces_read_ != file_polygons)
       fail(path_, 0,
-           "assimp read " + std::to_string(faces_read_) + " polygons but the file has " + std::to_string(file_polygons) +
-               ": not drawn, since the picture would be wrong");
+           "assimp 5.2.5 returned " + std::to_string(faces_read_) + " polygons where the pre-check counted " +
+               std::to_string(file_polygons) + ": refused rather than drawn wrong");
     if (mesh_.polygons.empty()) fail(path_, 0, "the model has no polygons (points and lines are not drawn)");
     return std::move(mesh_);
   }

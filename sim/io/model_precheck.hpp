@@ -24,6 +24,10 @@ bool is_checked_model_format(const std::string& lower_ext);
 uint64_t precheck_model(const std::string& path, const std::string& lower_ext, uint64_t size,
                         std::vector<std::string>& warnings);
 
+// The OBJ check (obj_precheck.cpp): every v and f statement; the material
+// libraries' warnings. Returns the polygons.
+uint64_t precheck_obj(const std::string& path, uint64_t size, std::vector<std::string>& warnings);
+
 // The PLY check (ply_precheck.cpp): header, then every element instance, so
 // no list length reaches assimp unchecked. Returns the polygons.
 uint64_t precheck_ply(const std::string& path, uint64_t size);

@@ -1,15 +1,40 @@
-// Tokens and numbers of text model files (OBJ, OFF, ASCII PLY), for the
-// pre-checks in model_precheck.cpp and ply_precheck.cpp.
+// Tokens, numbers and errors of model files, for the pre-checks
+// (obj_precheck.cpp, model_precheck.cpp, ply_precheck.cpp).
 #pragma once
 
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "common/input_error.hpp"
+
 namespace girtd {
+
+[[noreturn]] inline void fail(const std::string& path, int line, const std::string& what) {
+  throw InputError(path, line, what);
+}
+
+inline std::string vertices_text(int64_t n) { return std::to_string(n) + (n == 1 ? " vertex" : " vertices"); }
+
+// The line (from 1) of the first line end in `text` that assimp 5.2.5 reads
+// differently from this project's line splitting (its IsLineEnd also ends a
+// line at a lone CR, a NUL and a form feed), or 0 when there is none.
+inline int odd_line_end(std::string_view text) {
+  int line = 1;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') ++line;
+    else if (c == '\0' || c == '\f' || (c == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'))) return line;
+  }
+  return 0;
+}
+
+inline constexpr const char* kOddLineEnd =
+    "a NUL, a form feed or a CR without LF: assimp 5.2.5 ends a line there, this reader does not";
 
 // The whitespace-separated tokens of `line`, up to a '#' comment.
 inline void split_tokens(std::string_view line, std::vector<std::string_view>& out) {
@@ -54,6 +79,13 @@ inline bool parse_real(std::string_view t, double& value) {
   errno = 0;
   value = std::strtod(s.c_str(), &end);
   return end == s.c_str() + s.size();
+}
+
+// A vertex coordinate that is a number must be finite.
+inline void check_finite(const std::string& path, int line, int64_t vertex, std::string_view token) {
+  double d = 0;
+  if (parse_real(token, d) && !std::isfinite(d))
+    fail(path, line, "vertex " + std::to_string(vertex) + " has a coordinate that is NaN or infinite");
 }
 
 }  // namespace girtd

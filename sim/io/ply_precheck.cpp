@@ -6,6 +6,7 @@
 // against the vertex count; ASCII errors carry their line.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <string_view>
 #include <vector>
@@ -18,7 +19,6 @@
 namespace girtd {
 namespace {
 
-[[noreturn]] void fail(const std::string& path, int line, const std::string& what) { throw InputError(path, line, what); }
 
 struct PlyType {
   int size = 0;  // bytes in a binary file
@@ -146,16 +146,18 @@ uint64_t walk_ascii(const std::string& path, const std::string& data, const PlyH
   size_t at = h.body;
   int no = h.body_line - 1;
   std::vector<std::string_view> tok;
+  // One instance a line. assimp 5.2.5 skips neither a comment line nor
+  // (after the first) a blank one here: it would read them as instances.
   auto next_line = [&]() {
-    while (at < data.size()) {
-      size_t end = data.find('\n', at);
-      if (end == std::string::npos) end = data.size();
-      split_tokens(std::string_view(data.data() + at, end - at), tok);
-      at = end + 1;
-      ++no;
-      if (!tok.empty() && tok[0] != "comment") return true;
-    }
-    return false;
+    if (at >= data.size()) return false;
+    size_t end = data.find('\n', at);
+    if (end == std::string::npos) end = data.size();
+    split_tokens(std::string_view(data.data() + at, end - at), tok);
+    at = end + 1;
+    ++no;
+    if (tok.empty() || tok[0] == "comment")
+      fail(path, no, "a blank or comment line among the elements (assimp 5.2.5 would read it as one)");
+    return true;
   };
   for (const PlyElement& e : h.elements)
     for (uint64_t i = 0; i < e.count; ++i) {
@@ -215,7 +217,7 @@ class BinaryWalk {
         lists |= p.is_list;
         row += static_cast<uint64_t>(p.type.size);
       }
-      if (!lists) {  // fixed-size instances: one check for all of them
+      if (!lists && e.name != "vertex") {  // fixed-size instances: one check for all of them
         if (e.count > 0 && row > left() / e.count)
           fail_at(at_, "the file ends inside element '" + e.name + "' (" + std::to_string(e.count) + " x " +
                            std::to_string(row) + " bytes from here, " + std::to_string(left()) + " left)");
@@ -241,6 +243,24 @@ class BinaryWalk {
                        std::to_string(left()) + " left)");
   }
 
+  // A float32 or float64 at the cursor (which stays).
+  double real(const PlyType& t) const {
+    uint64_t u = 0;
+    for (int k = 0; k < t.size; ++k) {
+      const int b = big_ ? k : t.size - 1 - k;
+      u = (u << 8) | static_cast<unsigned char>(data_[at_ + static_cast<size_t>(b)]);
+    }
+    if (t.size == 4) {
+      float f = 0;
+      const uint32_t bits = static_cast<uint32_t>(u);
+      std::memcpy(&f, &bits, sizeof f);
+      return f;
+    }
+    double d = 0;
+    std::memcpy(&d, &u, sizeof d);
+    return d;
+  }
+
   // An integer value at the cursor (which moves past it).
   int64_t integer(const PlyType& t) {
     uint64_t u = 0;
@@ -256,6 +276,9 @@ class BinaryWalk {
   void instance_value(const PlyHeader& h, const PlyElement& e, uint64_t i, const PlyProperty& p) {
     if (!p.is_list) {
       need(static_cast<uint64_t>(p.type.size), e, i);
+      if (e.name == "vertex" && (p.name == "x" || p.name == "y" || p.name == "z") && !p.type.integer &&
+          !std::isfinite(real(p.type)))
+        fail_at(at_, "vertex " + std::to_string(i) + " has a coordinate that is NaN or infinite");
       at_ += static_cast<uint64_t>(p.type.size);
       return;
     }
@@ -299,7 +322,17 @@ uint64_t precheck_ply(const std::string& path, uint64_t size) {
   in.read(data.data(), static_cast<std::streamsize>(size));
   data.resize(static_cast<size_t>(in.gcount()));
   const PlyHeader h = read_header(path, data);
-  return h.format == PlyFormat::kAscii ? walk_ascii(path, data, h) : BinaryWalk(path, data, h).run(h);
+  const bool ascii = h.format == PlyFormat::kAscii;
+  if (const int line = odd_line_end(std::string_view(data).substr(0, ascii ? data.size() : h.body)))
+    fail(path, line, kOddLineEnd);
+  // assimp 5.2.5 drops a binary body's first byte when it is a line feed
+  // (PlyParser: "remove first char if it's /n"), and reads every value after
+  // it shifted. A header ending in CR LF is read as usual.
+  if (!ascii && h.body < data.size() && data[h.body] == '\n' && h.body >= 2 && data[h.body - 2] != '\r')
+    throw InputError::at_byte(path, h.body,
+                              "the first data byte is 0x0A, which assimp 5.2.5 drops (every value after it would be "
+                              "read shifted): end the header's lines with CR LF to keep it");
+  return ascii ? walk_ascii(path, data, h) : BinaryWalk(path, data, h).run(h);
 }
 
 }  // namespace girtd

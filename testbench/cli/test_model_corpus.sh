@@ -4,6 +4,10 @@
 # on all three; that frame is its twin's (the same shape written without the
 # feature) or the stored, blessed image_sha256; a file with a twin has the
 # twin's triangles_in (a face dropped where nobody sees it still counts);
+# the front end's polygon count (report.json frontend.polygons, golden) is
+# the manifest's `polygons`, which make_corpus.py took from the face lists it
+# wrote (so a reader that drops or splits faces is caught even where its
+# twin is read by the same reader);
 # `warning` rows warn on stderr and in report.json, `ok` rows do neither;
 # something was drawn (pixels_written > 1000).
 # Usage: test_model_corpus.sh GIRTD_BINARY REPO_ROOT
@@ -18,15 +22,16 @@ report_value() {  # REPORT KEY
   sed -n 's/^  "'"$2"'": "\{0,1\}\([^",]*\)"\{0,1\},\{0,1\}$/\1/p' "$1"
 }
 
-files=() twins=() expects=() shas=()
-while IFS=$'\t' read -r file twin expect what stored; do
+files=() twins=() expects=() shas=() polys=()
+while IFS=$'\t' read -r file twin expect what stored polygons; do
   [[ -z "$file" || "$file" == \#* ]] && continue
-  files+=("$file") twins+=("$twin") expects+=("$expect") shas+=("$stored")
+  files+=("$file") twins+=("$twin") expects+=("$expect") shas+=("$stored") polys+=("$polygons")
   [[ -f "$CORPUS/$file" ]] && ok || bad "$file: listed in corpus.tsv but missing"
   [[ "$expect" == ok || "$expect" == warning ]] && ok || bad "$file: expect '$expect' is neither ok nor warning"
   [[ -n "$what" ]] && ok || bad "$file: no description"
   [[ "$stored" == - || "$stored" =~ ^[0-9a-f]{64}$ ]] && ok || bad "$file: stored sha '$stored' is neither - nor 64 hex digits"
   [[ "$twin" == - || "$stored" == - ]] && ok || bad "$file: both a twin and a stored sha"
+  [[ "$polygons" =~ ^[1-9][0-9]*$ ]] && ok || bad "$file: polygons '$polygons' is not a count (run make_corpus.py)"
 done < "$MANIFEST"
 [[ ${#files[@]} -gt 0 ]] && ok || bad "no rows in $MANIFEST"
 
@@ -66,6 +71,9 @@ for i in "${!files[@]}"; do
       golden_tris[$f]=$(report_value "$out/report.json" triangles_in)
       pixels=$(report_value "$out/report.json" pixels_written)
       [[ "${pixels:-0}" -gt 1000 ]] && ok || bad "$f: pixels_written ${pixels:-none}: nothing drawn"
+      polygons=$(jq -r '.frontend.polygons' "$out/report.json")
+      [[ "$polygons" == "${polys[$i]}" ]] && ok ||
+        bad "$f: frontend.polygons $polygons, the file holds ${polys[$i]} (corpus.tsv)"
     fi
   done
 done
