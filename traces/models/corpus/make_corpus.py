@@ -7,7 +7,9 @@ manifest corpus.tsv (deterministic, standard library only).
 Each feature file (negative indices, groups, continuations, n-gons, binary
 PLY/STL, OFF colours, a missing .mtl, ...) has a TWIN: the same shape written
 without the feature, which must give the same frame (README.md next to this
-script; testbench/cli/test_model_corpus.sh checks it).
+script; testbench/cli/test_model_corpus.sh checks it). The manifest also
+gives each file's polygon count, taken from the face lists written here (not
+by reading the files back), which the front end must report.
 
 Coordinates are multiples of 1/256, so that every reader (OBJ, OFF, ASCII
 PLY/STL text through assimp's fast_atof; binary float32) gets the same
@@ -228,6 +230,18 @@ def put(name, data):
         f.write(data if isinstance(data, bytes) else data.encode())
 
 
+POLYGONS = {}  # model file -> the polygons (faces of 3+ corners) written to it
+
+
+def put_model(name, data, faces):
+    """Writes a model file that holds exactly the polygons `faces` (lines and
+    points besides them are not polygons) and records their count."""
+    assert name not in POLYGONS, name
+    assert faces and all(len(fc) >= 3 for fc in faces), name
+    POLYGONS[name] = len(faces)
+    put(name, data)
+
+
 def vline(p):
     return "v %s\n" % " ".join(num(c) for c in p)
 
@@ -239,8 +253,22 @@ def obj_text(comment, v, faces, head=""):
     return s
 
 
+def off_text(keyword, comment, v, faces, vertex_extra=lambda k: "", face_extra=lambda k: ""):
+    """OFF (or COFF): faces of at most 9 corners (assimp's OFF reader drops
+    a longer face, so GIRTD refuses it: sim/io/model_precheck.cpp)."""
+    assert all(len(fc) <= 9 for fc in faces), comment
+    s = "%s\n# %s\n%d %d 0\n" % (keyword, comment, len(v), len(faces))
+    for k, p in enumerate(v):
+        s += " ".join(num(c) for c in p) + vertex_extra(k) + "\n"
+    for k, fc in enumerate(faces):
+        s += "%d %s%s\n" % (len(fc), " ".join(map(str, fc)), face_extra(k))
+    return s
+
+
 def house_files(v, faces, groups):
-    put("house.obj", obj_text("house: walls, floor, hip roof, chimney; one object, no groups, no materials", v, faces))
+    put_model("house.obj", obj_text("house: walls, floor, hip roof, chimney; one object, no groups, no materials", v, faces),
+              faces)
+    put_model("house.off", off_text("OFF", "house (as house.obj), plain OFF", v, faces), faces)
     # o / g: the objects' vertices written where the object starts (global,
     # positive indices, as exporters write them).
     s = "# house: the same shape as house.obj in two objects (o) of two groups (g) each\n"
@@ -251,10 +279,10 @@ def house_files(v, faces, groups):
         if g == "chimney_sides":
             s += "o chimney\n" + "".join(vline(p) for p in v[chimney_first:])
         s += "g %s\ns 1\n" % g + "".join("f %s\n" % " ".join(str(i + 1) for i in fc) for fc in fs)
-    put("house_groups.obj", s)
+    put_model("house_groups.obj", s, [fc for _, _, fs in groups for fc in fs])
     # Line and point elements besides the faces (wire edges, markers): skipped.
-    put("house_lines.obj", obj_text("house (as house.obj) with l and p elements, which are not drawn", v, faces)
-        + "l 1 2 3 4 1\nl 5 9\np 9\np 1 2\n")
+    put_model("house_lines.obj", obj_text("house (as house.obj) with l and p elements, which are not drawn", v, faces)
+              + "l 1 2 3 4 1\nl 5 9\np 9\np 1 2\n", faces)
 
     def with_materials(mtllib, comment, chimney_material="brick", obj="o house\n"):
         s = "# %s\nmtllib %s\n%s" % (comment, mtllib, obj) + "".join(vline(p) for p in v)
@@ -268,21 +296,23 @@ def house_files(v, faces, groups):
         "newmtl brick\nKd 0.6 0.3 0.2\nillum 1\n\n"
         "newmtl soot\nKd 0.1 0.1 0.1\nd 1\nillum 1\n")
     # As Blender writes it: mtllib, o, the vertices, usemtl before each group of faces.
-    put("house_mtl.obj", with_materials("house.mtl", "house with materials from house.mtl (four usemtl)"))
+    put_model("house_mtl.obj", with_materials("house.mtl", "house with materials from house.mtl (four usemtl)"), faces)
     # usemtl before any o or g (hand-written files, older exporters): assimp
     # 5.2.5 logs "No object detected to attach a new mesh instance" at Err
     # severity, then reads every face; nothing is wrong with the file.
-    put("house_mtl_noobj.obj", with_materials("house.mtl", "house with materials from house.mtl, no o or g line",
-                                              obj=""))
+    put_model("house_mtl_noobj.obj", with_materials("house.mtl", "house with materials from house.mtl, no o or g line",
+                                                    obj=""), faces)
     # The same bytes but for the library's name: a file that does not exist
     # (nor house_nomtl.mtl, the name assimp's own fallback would try).
-    put("house_nomtl.obj", with_materials("house_lost.mtl", "house with materials from house.mtl (four usemtl)"))
-    put("house_badmtl.obj", with_materials("house.mtl", "house: the chimney's usemtl names a material house.mtl lacks",
-                                           chimney_material="granite"))
+    put_model("house_nomtl.obj", with_materials("house_lost.mtl", "house with materials from house.mtl (four usemtl)"),
+              faces)
+    put_model("house_badmtl.obj", with_materials("house.mtl", "house: the chimney's usemtl names a material house.mtl lacks",
+                                                 chimney_material="granite"), faces)
 
 
 def gem_files(v, faces):
-    put("gem.obj", obj_text("faceted gem: 8-gon table, 8 crown quads, 8 girdle quads, 8 pavilion triangles", v, faces))
+    put_model("gem.obj", obj_text("faceted gem: 8-gon table, 8 crown quads, 8 girdle quads, 8 pavilion triangles", v, faces),
+              faces)
     # Negative indices, as streaming exporters write them: each ring's
     # vertices, then the faces that can be drawn so far, indices counted back
     # from the last vertex read (reaching back across earlier blocks).
@@ -296,7 +326,7 @@ def gem_files(v, faces):
                 done.add(k)
                 s += "f %s\n" % " ".join(str(i - hi) for i in fc)
     assert len(done) == len(faces)
-    put("gem_negidx.obj", s)
+    put_model("gem_negidx.obj", s, faces)
     # Negative indices on v/vt/vn corners (per-face normals and texture
     # coordinates written before each face, as some exporters do).
     s = "# faceted gem (as gem.obj): v/vt/vn corners, all three indices negative\n" + "".join(vline(p) for p in v)
@@ -308,7 +338,7 @@ def gem_files(v, faces):
             s += "vt %s %s\n" % (num(q(0.5 + 0.5 * math.cos(2 * math.pi * k / len(fc)))),
                                  num(q(0.5 + 0.5 * math.sin(2 * math.pi * k / len(fc)))))
         s += "f %s\n" % " ".join("%d/%d/-1" % (i - len(v), k - len(fc)) for k, i in enumerate(fc))
-    put("gem_negidx_vtn.obj", s)
+    put_model("gem_negidx_vtn.obj", s, faces)
     # Line continuations: the 8-gon table's face line over three lines, a
     # vertex over two, a pavilion face over two (a space before each '\').
     s = "# faceted gem (as gem.obj) with backslash line continuations\n"
@@ -323,34 +353,16 @@ def gem_files(v, faces):
             s += "f %s \\\n%s\n" % (" ".join(idx[:2]), idx[2])
         else:
             s += "f %s\n" % " ".join(idx)
-    put("gem_cont.obj", s)
+    put_model("gem_cont.obj", s, faces)
     # Windows line ends (CR LF), the continuations included.
-    put("gem_crlf.obj", s.replace("# faceted gem (as gem.obj) with backslash line continuations",
-                                  "# faceted gem (as gem.obj) with CR LF line ends and backslash continuations")
-        .replace("\n", "\r\n"))
-
-    def off(keyword, vertex_extra, face_extra, comment):
-        s = "%s\n# %s\n%d %d 0\n" % (keyword, comment, len(v), len(faces))
-        for k, p in enumerate(v):
-            s += " ".join(num(c) for c in p) + vertex_extra(k) + "\n"
-        for k, fc in enumerate(faces):
-            s += "%d %s%s\n" % (len(fc), " ".join(map(str, fc)), face_extra(k))
-        return s
-    none = lambda k: ""
-    put("gem.off", off("OFF", none, none, "faceted gem (as gem.obj), plain OFF"))
-    put("gem_fcolor.off", off("OFF", none, lambda k: " %d %d %d" % (40 + 7 * k, 200 - 5 * k, 90 + 3 * k),
-                              "faceted gem (as gem.obj), an RGB colour (0..255) after each face"))
-    put("gem_coff.off", off("COFF", lambda k: " %.3f %.3f %.3f 1" % (k / 24, 1 - k / 24, 0.5), none,
-                            "faceted gem (as gem.obj), COFF: RGBA (0..1) after each vertex"))
-
-
-def prism_files(v, faces):
-    put("prisms.obj", obj_text("four prisms: convex 5-, 6-, 7- and 8-gon caps, quad sides", v, faces))
-    tris = []
-    for fc in faces:
-        tris += fan(fc) if len(fc) > 4 else [fc]
-    put("prisms_tri.obj", obj_text("the prisms of prisms.obj, each cap n-gon split as the GIRTD triangulator does "
-                                   "(fan from its first corner); quads kept", v, tris))
+    put_model("gem_crlf.obj", s.replace("# faceted gem (as gem.obj) with backslash line continuations",
+                                        "# faceted gem (as gem.obj) with CR LF line ends and backslash continuations")
+              .replace("\n", "\r\n"), faces)
+    put_model("gem.off", off_text("OFF", "faceted gem (as gem.obj), plain OFF", v, faces), faces)
+    put_model("gem_fcolor.off", off_text("OFF", "faceted gem (as gem.obj), an RGB colour (0..255) after each face", v, faces,
+                                         face_extra=lambda k: " %d %d %d" % (40 + 7 * k, 200 - 5 * k, 90 + 3 * k)), faces)
+    put_model("gem_coff.off", off_text("COFF", "faceted gem (as gem.obj), COFF: RGBA (0..1) after each vertex", v, faces,
+                                       vertex_extra=lambda k: " %.3f %.3f %.3f 1" % (k / 24, 1 - k / 24, 0.5)), faces)
 
 
 def ply_header(fmt, nv, nf, vertex_props, face_prop, comment):
@@ -358,8 +370,29 @@ def ply_header(fmt, nv, nf, vertex_props, face_prop, comment):
             % (fmt, comment, nv, vertex_props, nf, face_prop)).encode()
 
 
+XYZ = "property float x\nproperty float y\nproperty float z\n"
+
+
+def prism_files(v, faces):
+    put_model("prisms.obj", obj_text("four prisms: convex 5-, 6-, 7- and 8-gon caps, quad sides", v, faces), faces)
+    tris = []
+    for fc in faces:
+        tris += fan(fc) if len(fc) > 4 else [fc]
+    put_model("prisms_tri.obj", obj_text("the prisms of prisms.obj, each cap n-gon split as the GIRTD triangulator does "
+                                         "(fan from its first corner); quads kept", v, tris), tris)
+    # The n-gons through a reader that is not OBJ's: binary little-endian
+    # PLY, positions only, the same polygons in the same order.
+    data = ply_header("binary_little_endian", len(v), len(faces), XYZ, "property list uchar int vertex_indices\n",
+                      "four prisms (as prisms.obj), binary little-endian")
+    for p in v:
+        data += struct.pack("<3f", *p)
+    for fc in faces:
+        data += struct.pack("<B%di" % len(fc), len(fc), *fc)
+    put_model("prisms.ply", data, faces)
+
+
 def sphere_files(v, faces):
-    put("sphere.obj", obj_text("low-poly UV sphere r 16: 10 + 10 cap triangles, 40 quads", v, faces))
+    put_model("sphere.obj", obj_text("low-poly UV sphere r 16: 10 + 10 cap triangles, 40 quads", v, faces), faces)
     # v/vt/vn corners: a normal and a texture coordinate per vertex.
     s = "# low-poly UV sphere (as sphere.obj) with v/vt/vn corners\n" + "".join(vline(p) for p in v)
     for x, y, z in v:
@@ -368,31 +401,30 @@ def sphere_files(v, faces):
     for x, y, z in v:
         s += "vt %.4f %.4f\n" % (0.5 + math.atan2(z, x) / (2 * math.pi), 0.5 + y / 32)
     s += "".join("f %s\n" % " ".join("%d/%d/%d" % (i + 1, i + 1, i + 1) for i in fc) for fc in faces)
-    put("sphere_vtn.obj", s)
+    put_model("sphere_vtn.obj", s, faces)
     s = "# low-poly UV sphere (as sphere.obj) with v//vn corners (normals, no texture coordinates)\n"
     s += "".join(vline(p) for p in v)
     for x, y, z in v:
         ln = math.sqrt(x * x + y * y + z * z)
         s += "vn %.4f %.4f %.4f\n" % (x / ln, y / ln, z / ln)
     s += "".join("f %s\n" % " ".join("%d//%d" % (i + 1, i + 1) for i in fc) for fc in faces)
-    put("sphere_vn.obj", s)
+    put_model("sphere_vn.obj", s, faces)
     s = "# low-poly UV sphere (as sphere.obj) with v/vt corners (texture coordinates, no normals)\n"
     s += "".join(vline(p) for p in v)
     for x, y, z in v:
         s += "vt %.4f %.4f\n" % (0.5 + math.atan2(z, x) / (2 * math.pi), 0.5 + y / 32)
     s += "".join("f %s\n" % " ".join("%d/%d" % (i + 1, i + 1) for i in fc) for fc in faces)
-    put("sphere_vt.obj", s)
+    put_model("sphere_vt.obj", s, faces)
 
-    xyz = "property float x\nproperty float y\nproperty float z\n"
-    head = ply_header("ascii", len(v), len(faces), xyz, "property list uchar int vertex_indices\n",
+    head = ply_header("ascii", len(v), len(faces), XYZ, "property list uchar int vertex_indices\n",
                       "low-poly UV sphere (as sphere.obj), ASCII")
     body = "".join("%s\n" % " ".join(num(c) for c in p) for p in v)
     body += "".join("%d %s\n" % (len(fc), " ".join(map(str, fc))) for fc in faces)
-    put("sphere.ply", head + body.encode())
+    put_model("sphere.ply", head + body.encode(), faces)
     # Binary, both byte orders, with what scanners and exporters add: vertex
     # normals (float) and colours (uchar); the big-endian one names its list
     # vertex_index (the older spelling) with a uint count and uint indices.
-    props = xyz + "property float nx\nproperty float ny\nproperty float nz\n" \
+    props = XYZ + "property float nx\nproperty float ny\nproperty float nz\n" \
         "property uchar red\nproperty uchar green\nproperty uchar blue\n"
     for order, fmt, name, face_prop, count_fmt, index_fmt in (
             ("<", "binary_little_endian", "sphere_le.ply", "property list uchar int vertex_indices\n", "B", "i"),
@@ -404,7 +436,7 @@ def sphere_files(v, faces):
             data += struct.pack(order + "6f3B", x, y, z, x / ln, y / ln, z / ln, (37 * k) % 256, (91 * k) % 256, 128)
         for fc in faces:
             data += struct.pack(order + count_fmt + index_fmt * len(fc), len(fc), *fc)
-        put(name, data)
+        put_model(name, data, faces)
 
 
 def stl_binary(header, v, faces):
@@ -422,7 +454,7 @@ def stl_binary(header, v, faces):
 
 
 def icosa_files(v, faces):
-    put("icosa.obj", obj_text("icosahedron stretched 1.4 x along y: 20 triangles", v, faces))
+    put_model("icosa.obj", obj_text("icosahedron stretched 1.4 x along y: 20 triangles", v, faces), faces)
     s = "solid icosa\n"
     for fc in faces:
         pts = [v[i] for i in fc]
@@ -432,11 +464,12 @@ def icosa_files(v, faces):
         s += "".join("      vertex %s\n" % " ".join(num(c) for c in p) for p in pts)
         s += "    endloop\n  endfacet\n"
     s += "endsolid icosa\n"
-    put("icosa_ascii.stl", s)
-    put("icosa_bin.stl", stl_binary(b"icosahedron stretched 1.4 x along y (binary STL)", v, faces))
+    put_model("icosa_ascii.stl", s, faces)
+    put_model("icosa_bin.stl", stl_binary(b"icosahedron stretched 1.4 x along y (binary STL)", v, faces), faces)
     # Binary STL whose 80-byte header starts with "solid", as some CAD
     # exporters write it: only the size (84 + 50 n bytes) tells it is binary.
-    put("icosa_solidhdr.stl", stl_binary(b"solid icosa, binary STL from an exporter that starts its header so", v, faces))
+    put_model("icosa_solidhdr.stl", stl_binary(b"solid icosa, binary STL from an exporter that starts its header so",
+                                               v, faces), faces)
 
 
 # --------------------------------------------------------------- manifest
@@ -453,7 +486,8 @@ BLESSED = {
 }
 
 # file, twin ('-' for none), expect (ok | warning), what it exercises,
-# stored image_sha256 ('-' unless no twin can give the same frame).
+# stored image_sha256 ('-' unless no twin can give the same frame); main()
+# adds the polygon count the writer recorded (POLYGONS).
 MANIFEST = [
     ("house.obj", "-", "ok", "reference: house (walls, floor, hip roof, chimney), one object, positive indices", "-"),
     ("house_groups.obj", "house.obj", "ok", "o and g: two objects of two groups, each object's vertices before its faces", "-"),
@@ -464,6 +498,7 @@ MANIFEST = [
     ("house_nomtl.obj", "house_mtl.obj", "warning",
      "the same bytes as house_mtl.obj but its mtllib names a file that does not exist (house_lost.mtl)", "-"),
     ("house_badmtl.obj", "house_mtl.obj", "warning", "usemtl of a material house.mtl lacks: warning", "-"),
+    ("house.off", "house.obj", "ok", "plain OFF (the house as house.obj, read by a reader that is not OBJ's)", "-"),
     ("gem.obj", "-", "ok", "reference: faceted gem (8-gon table, crown and girdle quads, pavilion triangles)", "-"),
     ("gem_negidx.obj", "gem.obj", "ok", "negative (relative) indices, vertices in blocks, faces reaching back across blocks", "-"),
     ("gem_negidx_vtn.obj", "gem.obj", "ok", "negative indices in v/vt/vn corners (vn, vt written before each face)", "-"),
@@ -474,6 +509,7 @@ MANIFEST = [
     ("gem_coff.off", "gem.off", "ok", "COFF: RGBA (0..1) after each vertex", "-"),
     ("prisms.obj", "prisms_tri.obj", "ok", "convex 5-, 6-, 7-, 8-gon caps and quad sides (polygons kept for the GIRTD triangulator)", "-"),
     ("prisms_tri.obj", "-", "ok", "reference: the prisms with each n-gon cap written as the triangulator's fan", "-"),
+    ("prisms.ply", "prisms.obj", "ok", "binary little-endian PLY with the prisms' 5- to 8-gons (as prisms.obj: a reader that is not OBJ's)", "-"),
     ("sphere.obj", "-", "ok", "reference: low-poly UV sphere, smooth shading (cap triangles, quads)", "-"),
     ("sphere_vtn.obj", "sphere.obj", "ok", "v/vt/vn corners (file normals and texture coordinates ignored)", "-"),
     ("sphere_vn.obj", "sphere.obj", "ok", "v//vn corners", "-"),
@@ -498,12 +534,14 @@ def main():
     sphere_files(*uv_sphere())
     icosa_files(*icosahedron())
     v, f = soccer_ball()
-    put("ball.obj", obj_text("truncated icosahedron (soccer ball): 12 pentagons, 20 hexagons, one smooth surface", v, f))
-    rows = ["# file\ttwin\texpect\twhat it exercises\tstored_image_sha256\n"]
+    put_model("ball.obj", obj_text("truncated icosahedron (soccer ball): 12 pentagons, 20 hexagons, one smooth surface",
+                                   v, f), f)
+    rows = ["# file\ttwin\texpect\twhat it exercises\tstored_image_sha256\tpolygons\n"]
     for row in MANIFEST:
         assert os.path.exists(os.path.join(HERE, row[0])), row[0]
         assert row[1] == "-" or os.path.exists(os.path.join(HERE, row[1])), row[1]
-        rows.append("\t".join(row) + "\n")
+        rows.append("\t".join(row + (str(POLYGONS[row[0]]),)) + "\n")
+    assert sorted(POLYGONS) == sorted(row[0] for row in MANIFEST), set(POLYGONS) ^ {row[0] for row in MANIFEST}
     assert not os.path.exists(os.path.join(HERE, "house_nomtl.mtl"))
     assert not os.path.exists(os.path.join(HERE, "house_lost.mtl"))
     put("corpus.tsv", "".join(rows))
