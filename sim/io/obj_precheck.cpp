@@ -173,6 +173,49 @@ class ObjMaterials {
   std::set<std::string> defined_, reported_;
 };
 
+// A statement as assimp 5.2.5's ObjFileParser::parseFile sees it: by its
+// first character alone (any word starting with 'f', 'l' or 'p' is read as
+// a face, a line or a point; "v" needs a blank after it), an indented one not
+// at all, and nothing between a "cstype" line and an "end" line (free-form
+// geometry is skipped whole). kind() returns 'v', 'f', 'l', 'p' or 0 and
+// refuses, with the line, the statements assimp would read otherwise than
+// they are written.
+class AssimpView {
+ public:
+  char kind(const std::string& path, int line, const std::string& st, const std::vector<std::string_view>& tok) {
+    if (tok.empty()) return 0;
+    const bool geometry = tok[0] == "v" || tok[0] == "f";
+    if (in_cstype_) {
+      if (st[0] == 'e' && tok[0] == "end") in_cstype_ = false;
+      if (geometry) fail(path, line, "a '" + std::string(tok[0]) + "' inside a cstype ... end block (assimp 5.2.5 skips the whole block)");
+      return 0;
+    }
+    if (st[0] == ' ' || st[0] == '\t') {
+      if (geometry) fail(path, line, "an indented '" + std::string(tok[0]) + "' (assimp 5.2.5 skips it): remove the leading white space");
+      return 0;
+    }
+    switch (st[0]) {
+      case 'v':
+        return st.size() > 1 && (st[1] == ' ' || st[1] == '\t') ? 'v' : 0;
+      case 'f':
+      case 'l':
+      case 'p':
+        if (tok[0].size() != 1)
+          fail(path, line, "'" + std::string(tok[0]) + "' starts with '" + st[0] + "': assimp 5.2.5 reads it as a " +
+                               (st[0] == 'f' ? "face" : st[0] == 'l' ? "line" : "point"));
+        return st[0];
+      case 'c':
+        in_cstype_ = tok[0] == "cstype";
+        return 0;
+      default:
+        return 0;
+    }
+  }
+
+ private:
+  bool in_cstype_ = false;
+};
+
 // The vertex statements: 3, 4 or 6 numbers, each one assimp counts as a
 // number, finite, w not 0; texture coordinates of 2 or 3 numbers.
 void check_vertex(const std::string& path, int line, int64_t vertex, const std::vector<std::string_view>& tok) {
@@ -201,35 +244,41 @@ uint64_t precheck_obj(const std::string& path, uint64_t size, std::vector<std::s
   std::vector<std::string_view> tok;
   std::string st;
   int64_t total = 0;  // first pass: positive indices may point forward
+  AssimpView view1;
   for (ObjStatements s(path, text); s.next(st);) {
     split_tokens(st, tok);
-    if (tok.empty()) continue;
-    // assimp's parseFile switches on the first character: an indented v or f is skipped.
-    if ((tok[0] == "v" || tok[0] == "f") && (st[0] == ' ' || st[0] == '\t'))
-      fail(path, s.line(), "an indented '" + std::string(tok[0]) + "' (assimp 5.2.5 skips it): remove the leading white space");
-    if (tok[0] == "v") check_vertex(path, s.line(), ++total, tok);
-    if (tok[0] == "vt" && tok.size() == 2) fail(path, s.line(), "a one-number 'vt' (assimp 5.2.5 refuses it)");
+    if (view1.kind(path, s.line(), st, tok) == 'v') check_vertex(path, s.line(), ++total, tok);
+    if (!tok.empty() && tok[0] == "vt" && tok.size() == 2) fail(path, s.line(), "a one-number 'vt' (assimp 5.2.5 refuses it)");
   }
 
   ObjMaterials materials(path, warnings);
+  AssimpView view2;
   int64_t seen = 0;
   uint64_t polygons = 0;
   for (ObjStatements s(path, text); s.next(st);) {
     const int no = s.line();
     split_tokens(st, tok);
-    if (tok.empty()) continue;
-    if (tok[0] == "v") ++seen;
-    if (tok[0] == "mtllib" && tok.size() >= 2) materials.libraries(no, rest_of(st, "mtllib"));
-    if (tok[0] == "usemtl" && tok.size() >= 2) materials.use(no, rest_of(st, "usemtl"));
-    if (tok[0] != "f") continue;
-    if (st.find('#') != std::string::npos) fail(path, no, "a comment after a face (assimp 5.2.5 refuses it): put it on a line of its own");
-    if (tok.size() == 1) continue;  // an empty face: assimp warns and draws the rest
-    if (tok.size() < 4) fail(path, no, "a face of " + std::to_string(tok.size() - 1) + " corners (a polygon needs 3)");
-    ++polygons;
+    const char kind = view2.kind(path, no, st, tok);
+    if (kind == 'v') ++seen;
+    if (kind != 0 || tok.empty()) {
+    } else if (tok[0] == "mtllib" && tok.size() >= 2) {
+      materials.libraries(no, rest_of(st, "mtllib"));
+    } else if (tok[0] == "usemtl" && tok.size() >= 2) {
+      materials.use(no, rest_of(st, "usemtl"));
+    }
+    if (kind != 'f' && kind != 'l' && kind != 'p') continue;
+    const std::string what = kind == 'f' ? "face" : kind == 'l' ? "line" : "point";
+    if (st.find('#') != std::string::npos)
+      fail(path, no, "a comment after a " + what + " (assimp 5.2.5 refuses it): put it on a line of its own");
+    if (tok.size() == 1) continue;  // empty: assimp warns and reads the rest
+    if (kind == 'f') {
+      if (tok.size() < 4) fail(path, no, "a face of " + std::to_string(tok.size() - 1) + " corners (a polygon needs 3)");
+      ++polygons;
+    }
     for (size_t k = 1; k < tok.size(); ++k) {
       const std::string_view corner = tok[k];
       if (std::count(corner.begin(), corner.end(), '/') > 2)
-        fail(path, no, "corner '" + std::string(corner) + "' has more than v/vt/vn (assimp 5.2.5 drops the rest of the face)");
+        fail(path, no, "corner '" + std::string(corner) + "' has more than v/vt/vn (assimp 5.2.5 drops the rest of the " + what + ")");
       for (size_t at = 0; at <= corner.size();) {
         const size_t slash = std::min(corner.find('/', at), corner.size());
         if (!index_part_ok(corner.substr(at, slash - at)))

@@ -91,6 +91,13 @@ TEST_CASE("model messages: what assimp 5.2.5 would misread without a word is ref
   CHECK(error_of([] { import(temp_file("comment.obj", kTriangle + "f 1 2 3\n# second \\\nf 2 4 3\n")); }) ==
         "/tmp/girtd_frontend_test_comment.obj:6: a '\\' at the end of a comment or a '' line: assimp 5.2.5 would join "
         "the next line to it and lose that statement");
+  // assimp switches on the first character: "lod 1" is a line through vertex 1, "fx ..." a face.
+  CHECK(error_of([] { import(temp_file("lod.obj", kTriangle + "f 1 2 3\nlod 1\n")); }) ==
+        "/tmp/girtd_frontend_test_lod.obj:6: 'lod' starts with 'l': assimp 5.2.5 reads it as a line");
+  // ... and skips everything between cstype and end, vertices included.
+  CHECK(error_of([] { import(temp_file("cstype.obj", "cstype bspline\nv 0 0 0\nend\n" + kTriangle + "f 1 2 3\n")); }) ==
+        "/tmp/girtd_frontend_test_cstype.obj:2: a 'v' inside a cstype ... end block (assimp 5.2.5 skips the whole "
+        "block)");
   // OFF: a comment line among the faces is read as a face of 0 corners, and the last face is lost.
   CHECK(error_of([] {
           import(temp_file("comment.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n# faces\n3 0 1 2\n3 1 3 2\n"));
