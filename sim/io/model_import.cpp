@@ -102,19 +102,28 @@ class MessageLog : public Assimp::LogStream {
   std::vector<std::pair<std::string, int>> warnings_;
 };
 
-// Files as usual, but never a material library: materials in model files
-// are not used, and a broken .mtl would otherwise fail a model that can be
-// drawn (a bad number, a file of 1-7 bytes). The OBJ pre-check warns about
-// missing libraries and names itself.
-class NoMaterialLibraries : public Assimp::DefaultIOSystem {
+// Opens the model file and nothing else: materials in model files are not
+// used, and what a material library can do to assimp 5.2.5 is worse than
+// missing it: a bad number or a 1-7 byte .mtl fails a model that can be
+// drawn, a name it can open but not read throws "File read error" (and
+// leaks), a pipe never ends. The
+// OBJ pre-check warns of missing libraries and names itself.
+class OnlyTheModelFile : public Assimp::DefaultIOSystem {
  public:
-  bool Exists(const char* file) const override { return !is_library(file) && DefaultIOSystem::Exists(file); }
+  explicit OnlyTheModelFile(const std::string& path) : model_(canonical(path)) {}
+  bool Exists(const char* file) const override { return is_model(file) && DefaultIOSystem::Exists(file); }
   Assimp::IOStream* Open(const char* file, const char* mode) override {
-    return is_library(file) ? nullptr : DefaultIOSystem::Open(file, mode);
+    return is_model(file) ? DefaultIOSystem::Open(file, mode) : nullptr;
   }
 
  private:
-  static bool is_library(const char* file) { return lower_extension(file) == ".mtl"; }
+  static std::string canonical(const std::string& path) {
+    std::error_code ec;
+    const fs::path p = fs::weakly_canonical(path, ec);
+    return ec ? std::string() : p.string();
+  }
+  bool is_model(const char* file) const { return !model_.empty() && canonical(file) == model_; }
+  std::string model_;
 };
 
 class MeshBuilder {
@@ -204,7 +213,7 @@ Mesh import_model(const std::string& path, std::vector<std::string>& warnings) {
   const unsigned flags = aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
   MessageLog log;
   Assimp::Importer importer;
-  importer.SetIOHandler(new NoMaterialLibraries);  // the importer owns it
+  importer.SetIOHandler(new OnlyTheModelFile(path));  // the importer owns it
   const aiScene* scene = importer.ReadFile(path, flags);
   if (!scene || !scene->mRootNode) fail_assimp(path, importer);
   if (!log.first_error().empty()) fail(path, 0, "cannot read the model: " + log.first_error());

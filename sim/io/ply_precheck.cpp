@@ -171,8 +171,12 @@ uint64_t walk_ascii(const std::string& path, const std::string& data, const PlyH
         if (!p.is_list) {
           const std::string_view v = value(p.name.c_str());
           double d = 0;
-          if (e.name == "vertex" && (p.name == "x" || p.name == "y" || p.name == "z") && parse_real(v, d) &&
-              !std::isfinite(d))
+          int64_t n = 0;
+          // assimp 5.2.5 throws a parse error naming no line (and leaks) on a value that is no number.
+          if (p.type.integer ? !parse_integer(v, n) : !parse_real(v, d))
+            fail(path, no, where(e, i) + ": '" + std::string(v) + "' is not " +
+                               (p.type.integer ? "an integer" : "a number") + " (property " + p.name + ")");
+          if (e.name == "vertex" && (p.name == "x" || p.name == "y" || p.name == "z") && !std::isfinite(d))
             fail(path, no, "vertex " + std::to_string(i) + " has a coordinate that is NaN or infinite");
           continue;
         }
