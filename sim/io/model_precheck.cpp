@@ -58,6 +58,12 @@ class OffLines {
   int no_ = 0;
 };
 
+// OFF counts and indices as assimp 5.2.5 reads them (strtoul10): digits
+// only; it stops at a sign without moving on, so "+3" reads 0.
+bool plain_digits(std::string_view t) {
+  return !t.empty() && t.size() <= 18 && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 // OFF: the header's counts against the file size and the limits, then every
 // vertex and face line: a face's corner count (what assimp allocates from),
 // its indices, NaN coordinates. Returns the polygons (faces of 3 or more corners).
@@ -94,7 +100,7 @@ uint64_t precheck_off(const std::string& path, uint64_t size) {
   const int counts_line = header[first].second;
   for (size_t i = 0; i < 2; ++i) {
     const std::string& t = header[first + i].first;
-    if (!parse_integer(t, count[i]) || count[i] < 0)
+    if (!plain_digits(t) || !parse_integer(t, count[i]))
       fail(path, counts_line, "OFF count '" + t + "' is not a non-negative integer");
     if (static_cast<uint64_t>(count[i]) > size)
       fail(path, counts_line,
@@ -104,7 +110,7 @@ uint64_t precheck_off(const std::string& path, uint64_t size) {
   // The edge count is read (and ignored) by assimp as an integer: a missing
   // one takes the integer part of the first coordinate.
   int64_t edges = 0;
-  if (!parse_integer(header[first + 2].first, edges) || edges < 0)
+  if (!plain_digits(header[first + 2].first) || !parse_integer(header[first + 2].first, edges))
     fail(path, header[first + 2].second,
          "OFF edge count '" + header[first + 2].first + "' is not a non-negative integer (the header is vertices faces edges)");
   if (static_cast<uint64_t>(count[1]) > kMaxModelPolygons)
@@ -115,7 +121,11 @@ uint64_t precheck_off(const std::string& path, uint64_t size) {
   for (int64_t v = 0; v < vertices; ++v) {
     if (!lines.next(tok, true))
       fail(path, lines.line(), "the file ends after " + std::to_string(v) + " of its " + vertices_text(vertices));
-    for (size_t k = 0; k < tok.size() && k < 3; ++k) check_finite(path, lines.line(), v, tok[k]);
+    if (tok.size() < 3) fail(path, lines.line(), "a vertex of " + std::to_string(tok.size()) + " numbers (x y z)");
+    for (size_t k = 0; k < std::max<size_t>(3, colour_tokens) && k < tok.size(); ++k) {
+      if (k < 3) check_finite(path, lines.line(), v, tok[k]);
+      check_assimp_real(path, lines.line(), tok[k]);
+    }
     if (tok.size() < colour_tokens)
       fail(path, lines.line(), "a " + std::string(prefix) + "OFF vertex has " +
                                    std::to_string(colour_tokens) + " numbers with its 4 colour values (RGBA); this one has " +
@@ -125,7 +135,7 @@ uint64_t precheck_off(const std::string& path, uint64_t size) {
     if (!lines.next(tok, true))
       fail(path, lines.line(), "the file ends after " + std::to_string(f) + " of its " + std::to_string(faces) + " faces");
     int64_t corners = 0;
-    if (!parse_integer(tok[0], corners) || corners < 1)
+    if (!plain_digits(tok[0]) || !parse_integer(tok[0], corners) || corners < 1)
       fail(path, lines.line(), "face size '" + std::string(tok[0]) + "' is not a positive integer");
     if (corners > kMaxOffFaceCorners)
       fail(path, lines.line(),
@@ -137,7 +147,7 @@ uint64_t precheck_off(const std::string& path, uint64_t size) {
            "face lists " + std::to_string(tok.size() - 1) + " of its " + std::to_string(corners) + " vertex indices");
     for (int64_t k = 1; k <= corners; ++k) {
       int64_t i = 0;
-      if (!parse_integer(tok[static_cast<size_t>(k)], i) || i < 0 || i >= vertices)
+      if (!plain_digits(tok[static_cast<size_t>(k)]) || !parse_integer(tok[static_cast<size_t>(k)], i) || i >= vertices)
         fail(path, lines.line(),
              "vertex index " + std::string(tok[static_cast<size_t>(k)]) + " is out of range (the file has " +
                  vertices_text(vertices) + ", counted from 0)");
@@ -171,12 +181,21 @@ uint64_t precheck_stl(const std::string& path, uint64_t size) {
   if (!binary && text_start != std::string::npos && data.compare(text_start, 5, "solid") == 0) {
     if (const int line = odd_line_end(data)) fail(path, line, kOddLineEnd);
     std::vector<std::string_view> tok;
-    uint64_t facets = 0;  // "facet" tokens: several may share a line
-    for (size_t at = 0; at < data.size();) {
+    uint64_t facets = 0;  // "facet normal": several may share a line; a solid may be named "facet"
+    int line = 0;
+    for (size_t at = 0; at < data.size(); ++line) {
       size_t end = data.find('\n', at);
       if (end == std::string::npos) end = data.size();
       split_tokens(std::string_view(data).substr(at, end - at), tok);
-      facets += static_cast<uint64_t>(std::count(tok.begin(), tok.end(), "facet"));
+      for (size_t k = 0; k < tok.size(); ++k) {
+        if (tok[k] == "facet" && k + 1 < tok.size() && tok[k + 1] == "normal") ++facets;
+        if (tok[k] == "vertex" || tok[k] == "normal")
+          for (size_t c = k + 1; c <= k + 3; ++c) {
+            if (c >= tok.size()) fail(path, line + 1, "'" + std::string(tok[k]) + "' with fewer than 3 numbers");
+            check_finite(path, line + 1, static_cast<int64_t>(facets), tok[c]);
+            check_assimp_real(path, line + 1, tok[c]);
+          }
+      }
       at = end + 1;
     }
     return facets;

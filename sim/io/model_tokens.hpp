@@ -22,19 +22,21 @@ inline std::string vertices_text(int64_t n) { return std::to_string(n) + (n == 1
 
 // The line (from 1) of the first line end in `text` that assimp 5.2.5 reads
 // differently from this project's line splitting (its IsLineEnd also ends a
-// line at a lone CR, a NUL and a form feed), or 0 when there is none.
+// line at a lone CR, a NUL and a form feed; its IsSpace does not take a
+// vertical tab for a blank), or 0 when there is none.
 inline int odd_line_end(std::string_view text) {
   int line = 1;
   for (size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (c == '\n') ++line;
-    else if (c == '\0' || c == '\f' || (c == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'))) return line;
+    else if (c == '\0' || c == '\f' || c == '\v' || (c == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')))
+      return line;
   }
   return 0;
 }
 
 inline constexpr const char* kOddLineEnd =
-    "a NUL, a form feed or a CR without LF: assimp 5.2.5 ends a line there, this reader does not";
+    "a NUL, a form feed, a vertical tab or a CR without LF: assimp 5.2.5 reads lines and blanks there otherwise";
 
 // The whitespace-separated tokens of `line`, up to a '#' comment.
 inline void split_tokens(std::string_view line, std::vector<std::string_view>& out) {
@@ -79,6 +81,44 @@ inline bool parse_real(std::string_view t, double& value) {
   errno = 0;
   value = std::strtod(s.c_str(), &end);
   return end == s.c_str() + s.size();
+}
+
+// Why assimp 5.2.5's fast_atof would read the real number `t` otherwise
+// than its text says, or "" when it reads it right: only decimal syntax
+// [+-]digits[.digits][(e|E)[+-]digits] (it stops at "0x", at a second '.'),
+// at most 15 digits after the point (it drops the rest), at most 18 before
+// it (its overflow test misses some wraps), and within float's range.
+inline std::string assimp_real_problem(std::string_view t) {
+  size_t i = t.size() > 0 && (t[0] == '-' || t[0] == '+') ? 1 : 0;
+  auto digits = [&]() {
+    const size_t start = i;
+    while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+    return i - start;
+  };
+  const size_t whole = digits();
+  size_t fraction = 0;
+  if (i < t.size() && t[i] == '.') {
+    ++i;
+    fraction = digits();
+  }
+  if (whole + fraction == 0) return "is not a number";
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < t.size() && (t[i] == '-' || t[i] == '+')) ++i;
+    if (digits() == 0) return "is not a number";
+  }
+  if (i != t.size()) return "is not a decimal number";
+  if (whole > 18) return "has more than 18 digits before the point";
+  if (fraction > 15) return "has more than 15 digits after the point";
+  double d = 0;
+  if (!parse_real(t, d) || !(std::fabs(d) <= 3.4028234663852886e38)) return "is out of a float's range";
+  return "";
+}
+
+// Refuses a real number assimp 5.2.5 would misread, naming it and its line.
+inline void check_assimp_real(const std::string& path, int line, std::string_view t) {
+  const std::string problem = assimp_real_problem(t);
+  if (!problem.empty()) fail(path, line, "'" + std::string(t) + "' " + problem + " (assimp 5.2.5 would misread it)");
 }
 
 // A vertex coordinate that is a number must be finite.

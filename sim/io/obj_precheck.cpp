@@ -53,7 +53,9 @@ class ObjStatements {
       if (at_ >= text_.size()) return true;
       const std::string_view next_line = peek_line();
       // assimp copies the first character after the joined line end unchecked.
-      if (next_line.empty()) fail(path_, no_ + 1, "a '\\' continuation runs into an empty line (assimp 5.2.5 would lose the next statement)");
+      if (next_line.empty() || next_line[0] == '\\')
+        fail(path_, no_ + 1, "a '\\' continuation runs into an empty line or another '\\' (assimp 5.2.5 would lose "
+                             "what follows)");
       // assimp puts nothing between the joined lines: "1\" + "2" reads 12.
       if (!line.empty() && !is_space(line.back()) && !is_space(next_line[0]))
         fail(path_, no_, "a '\\' continuation with no space on either side: assimp 5.2.5 joins '" +
@@ -100,15 +102,16 @@ bool assimp_number(std::string_view t) {
          parse_real(t, d);
 }
 
-// An index part of a face corner: empty (v//vn) or an integer as assimp
-// 5.2.5 reads it. ObjFileParser::getFace steps by the value's digits, not
-// the token's, so "01", "+2" and "-02" read as an extra corner; atoi
-// saturates past 10 digits.
+// An index part of a face corner: empty (v//vn) or a non-zero int as
+// assimp 5.2.5 reads it. ObjFileParser::getFace steps by the value's
+// digits, not the token's, so "01", "+2" and "-02" read as an extra corner,
+// and a value past INT_MAX wraps negative and takes the next corner with it.
 bool index_part_ok(std::string_view part) {
   if (part.empty()) return true;
   const std::string_view digits = part.substr(part[0] == '-' ? 1 : 0);
-  if (digits.empty() || digits.size() > 10 || (digits.size() > 1 && digits[0] == '0')) return false;
-  return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (digits.empty() || digits.size() > 10 || digits[0] == '0') return false;
+  if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) return false;
+  return std::stoll(std::string(digits)) <= 2147483647;
 }
 
 // The text after `keyword`, trimmed (names may hold spaces).
@@ -129,6 +132,11 @@ class ObjMaterials {
 
   // "mtllib a.mtl b.mtl": several libraries, or one name with spaces.
   void libraries(int line, const std::string& names) {
+    // assimp takes the whole rest of the line for one name; were it the model
+    // itself, its MTL reader would run on the OBJ text (and can crash on it).
+    std::error_code ec;
+    if (fs::weakly_canonical(fs::path(path_).parent_path() / names, ec) == fs::weakly_canonical(path_, ec))
+      fail(path_, line, "mtllib names the model file itself");
     if (read(names)) return;
     std::istringstream each(names);
     std::string name;
@@ -227,6 +235,7 @@ void check_vertex(const std::string& path, int line, int64_t vertex, const std::
     if (!assimp_number(tok[k]))
       fail(path, line, "'" + std::string(tok[k]) + "' is not a number assimp 5.2.5 reads (it would drop the vertex)" +
                            (tok[k][0] == '.' ? ": write 0" + std::string(tok[k]) : std::string()));
+    check_assimp_real(path, line, tok[k]);
   }
   double w = 1;
   if (n == 4 && parse_real(tok[4], w) && w == 0) fail(path, line, "a vertex with w = 0 (x/w is not a point)");
@@ -247,7 +256,12 @@ uint64_t precheck_obj(const std::string& path, uint64_t size, std::vector<std::s
   AssimpView view1;
   for (ObjStatements s(path, text); s.next(st);) {
     split_tokens(st, tok);
-    if (view1.kind(path, s.line(), st, tok) == 'v') check_vertex(path, s.line(), ++total, tok);
+    const char kind = view1.kind(path, s.line(), st, tok);
+    // assimp counts a vertex's numbers to the end of the line, a comment's included.
+    if ((kind == 'v' || (!tok.empty() && (tok[0] == "vt" || tok[0] == "vn"))) && st.find('#') != std::string::npos)
+      fail(path, s.line(), "a comment after '" + std::string(tok[0]) + "' (assimp 5.2.5 counts its numbers too): put it "
+                           "on a line of its own");
+    if (kind == 'v') check_vertex(path, s.line(), ++total, tok);
     if (!tok.empty() && tok[0] == "vt" && tok.size() == 2) fail(path, s.line(), "a one-number 'vt' (assimp 5.2.5 refuses it)");
   }
 
@@ -282,13 +296,12 @@ uint64_t precheck_obj(const std::string& path, uint64_t size, std::vector<std::s
       for (size_t at = 0; at <= corner.size();) {
         const size_t slash = std::min(corner.find('/', at), corner.size());
         if (!index_part_ok(corner.substr(at, slash - at)))
-          fail(path, no, "corner '" + std::string(corner) + "': an index assimp 5.2.5 misreads (write it as a plain "
-                             "integer: no leading '0' or '+', at most 10 digits)");
+          fail(path, no, "corner '" + std::string(corner) + "': an index assimp 5.2.5 misreads (write a plain non-zero "
+                             "integer: no leading '0' or '+', at most 2147483647)");
         at = slash + 1;
       }
       int64_t i = 0;
       if (!parse_leading_integer(corner, i)) fail(path, no, "corner '" + std::string(corner) + "' has no vertex index");
-      if (i == 0) fail(path, no, "vertex index 0 is out of range (OBJ counts from 1)");
       if (i > total || (i < 0 && seen + i < 0))
         fail(path, no,
              "vertex index " + std::to_string(i) + " is out of range (" +

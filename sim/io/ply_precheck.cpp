@@ -72,6 +72,23 @@ struct PlyHeader {
   int body_line = 0;      // the line the body starts on
 };
 
+// The face element: one vertex index list and no other list (assimp 5.2.5
+// reads a face without an index list, and a texture-coordinate list longer
+// than twice the corners, past the end of its arrays).
+void check_faces_element(const std::string& path, int line, const PlyHeader& h) {
+  for (const PlyElement& e : h.elements) {
+    if (e.name != "face") continue;
+    int index_lists = 0;
+    for (const PlyProperty& p : e.properties) {
+      if (e.face_indices(p)) ++index_lists;
+      else if (p.is_list)
+        fail(path, line, "element face has the list '" + p.name + "' (assimp 5.2.5 reads such lists unchecked): only "
+                             "vertex_indices is read");
+    }
+    if (index_lists != 1) fail(path, line, "element face needs one vertex_indices list, not " + std::to_string(index_lists));
+  }
+}
+
 PlyHeader read_header(const std::string& path, const std::string& data) {
   PlyHeader h;
   bool have_format = false;
@@ -89,9 +106,13 @@ PlyHeader read_header(const std::string& path, const std::string& data) {
       continue;
     }
     split_tokens(line, tok);
+    // assimp 5.2.5 looks for the format on line 2 only (PlyLoader).
+    if (no == 2 && (tok.empty() || tok[0] != "format"))
+      fail(path, 2, "the second line must be 'format ...' (assimp 5.2.5 reads it there only)");
     if (tok.empty() || tok[0] == "comment" || tok[0] == "obj_info") continue;
     if (tok[0] == "end_header") {
       if (!have_format) fail(path, no, "PLY header without a 'format' line");
+      check_faces_element(path, no, h);
       h.body = std::min(at, data.size());
       h.body_line = no + 1;
       return h;
@@ -118,6 +139,13 @@ PlyHeader read_header(const std::string& path, const std::string& data) {
       if (name == "tristrips") fail(path, no, "triangle strips ('element tristrips') are not read: write faces instead");
       if (name == "face" && static_cast<uint64_t>(n) > kMaxModelPolygons)
         fail(path, no, "header claims " + count + " faces (limit " + std::to_string(kMaxModelPolygons) + ")");
+      // assimp 5.2.5 sizes its arrays from the first vertex or face element
+      // and writes every later one's past their end (PlyLoader).
+      for (const PlyElement& e : h.elements)
+        if ((name == "vertex" || name == "face") && e.name == name)
+          fail(path, no, "a second '" + name + "' element (assimp 5.2.5 overruns its arrays on it)");
+      if (name == "face" && std::none_of(h.elements.begin(), h.elements.end(), [](const PlyElement& e) { return e.name == "vertex"; }))
+        fail(path, no, "'element face' before 'element vertex' (assimp 5.2.5 refuses it)");
       if (name == "vertex") h.vertices = static_cast<uint64_t>(n);
       h.elements.push_back({name, static_cast<uint64_t>(n), {}});
     } else if (tok[0] == "property") {
@@ -135,6 +163,16 @@ PlyHeader read_header(const std::string& path, const std::string& data) {
       h.elements.back().properties.push_back(p);
     }
   }
+}
+
+// An ASCII integer as assimp 5.2.5 reads it into `t`: no sign on an
+// unsigned type (strtoul10 stops there without moving on, and the rest of
+// the line slides), and within the type's range (strtol10 wraps).
+bool integer_fits(std::string_view v, const PlyType& t) {
+  int64_t n = 0;
+  if (!parse_integer(v, n) || (!t.is_signed && (v[0] == '-' || v[0] == '+'))) return false;
+  const int bits = 8 * t.size;
+  return t.is_signed ? n >= -(int64_t{1} << (bits - 1)) && n < (int64_t{1} << (bits - 1)) : n < (int64_t{1} << bits);
 }
 
 std::string where(const PlyElement& e, uint64_t i) { return "element '" + e.name + "' " + std::to_string(i); }
@@ -173,16 +211,17 @@ uint64_t walk_ascii(const std::string& path, const std::string& data, const PlyH
           double d = 0;
           int64_t n = 0;
           // assimp 5.2.5 throws a parse error naming no line (and leaks) on a value that is no number.
-          if (p.type.integer ? !parse_integer(v, n) : !parse_real(v, d))
+          if (p.type.integer ? !integer_fits(v, p.type) : !parse_real(v, d))
             fail(path, no, where(e, i) + ": '" + std::string(v) + "' is not " +
-                               (p.type.integer ? "an integer" : "a number") + " (property " + p.name + ")");
+                               (p.type.integer ? "an integer of its type" : "a number") + " (property " + p.name + ")");
           if (e.name == "vertex" && (p.name == "x" || p.name == "y" || p.name == "z") && !std::isfinite(d))
             fail(path, no, "vertex " + std::to_string(i) + " has a coordinate that is NaN or infinite");
+          if (!p.type.integer) check_assimp_real(path, no, v);
           continue;
         }
         int64_t n = 0;
         const std::string_view count = value(p.name.c_str());
-        if (!parse_integer(count, n) || n < 0)
+        if (!integer_fits(count, p.count_type) || !parse_integer(count, n) || n < 0)
           fail(path, no, where(e, i) + ": list length '" + std::string(count) + "' is not a non-negative integer");
         if (static_cast<uint64_t>(n) > kMaxPolygonVertices)
           fail(path, no,
@@ -196,7 +235,8 @@ uint64_t walk_ascii(const std::string& path, const std::string& data, const PlyH
         for (int64_t k = 0; k < n; ++k) {
           const std::string_view v = tok[t++];
           int64_t idx = 0;
-          if (e.face_indices(p) && (!parse_integer(v, idx) || idx < 0 || static_cast<uint64_t>(idx) >= h.vertices))
+          if (e.face_indices(p) &&
+              (!integer_fits(v, p.type) || !parse_integer(v, idx) || idx < 0 || static_cast<uint64_t>(idx) >= h.vertices))
             fail(path, no,
                  "vertex index " + std::string(v) + " is out of range (the file has " + std::to_string(h.vertices) +
                      " vertices, counted from 0)");

@@ -81,13 +81,13 @@ TEST_CASE("model messages: what assimp 5.2.5 would misread without a word is ref
         "/tmp/girtd_frontend_test_indent.obj:2: an indented 'v' (assimp 5.2.5 skips it): remove the leading white space");
   // Line ends assimp knows and this reader does not: the vertex after the CR would be lost.
   CHECK(error_of([] { import(temp_file("cr.obj", "# c\rv 5 5 5\n" + kTriangle + "f 1 2 3\n")); }) ==
-        "/tmp/girtd_frontend_test_cr.obj:1: a NUL, a form feed or a CR without LF: assimp 5.2.5 ends a line there, this "
-        "reader does not");
+        "/tmp/girtd_frontend_test_cr.obj:1: a NUL, a form feed, a vertical tab or a CR without LF: assimp 5.2.5 reads "
+        "lines and blanks there otherwise");
   CHECK(error_of([] { import(temp_file("word.obj", "v 9 9 x\n" + kTriangle + "f 2 3 4\n")); }) ==
         "/tmp/girtd_frontend_test_word.obj:1: 'x' is not a number assimp 5.2.5 reads (it would drop the vertex)");
   CHECK(error_of([] { import(temp_file("big.obj", kTriangle + "f 1 2 3 9900000000000000001\n")); }) ==
-        "/tmp/girtd_frontend_test_big.obj:5: corner '9900000000000000001': an index assimp 5.2.5 misreads (write it as "
-        "a plain integer: no leading '0' or '+', at most 10 digits)");
+        "/tmp/girtd_frontend_test_big.obj:5: corner '9900000000000000001': an index assimp 5.2.5 misreads (write a plain "
+        "non-zero integer: no leading '0' or '+', at most 2147483647)");
   CHECK(error_of([] { import(temp_file("comment.obj", kTriangle + "f 1 2 3\n# second \\\nf 2 4 3\n")); }) ==
         "/tmp/girtd_frontend_test_comment.obj:6: a '\\' at the end of a comment or a '' line: assimp 5.2.5 would join "
         "the next line to it and lose that statement");
@@ -98,6 +98,28 @@ TEST_CASE("model messages: what assimp 5.2.5 would misread without a word is ref
   CHECK(error_of([] { import(temp_file("cstype.obj", "cstype bspline\nv 0 0 0\nend\n" + kTriangle + "f 1 2 3\n")); }) ==
         "/tmp/girtd_frontend_test_cstype.obj:2: a 'v' inside a cstype ... end block (assimp 5.2.5 skips the whole "
         "block)");
+  // Numbers as assimp's fast_atof reads them: no hexadecimal, at most 15 decimals, within a float.
+  CHECK(error_of([] { import(temp_file("hex.obj", "v 0 0 0\nv 2 0 0\nv 0x1 1 0\nf 1 2 3\n")); }) ==
+        "/tmp/girtd_frontend_test_hex.obj:3: '0x1' is not a decimal number (assimp 5.2.5 would misread it)");
+  // A comment after a vertex: assimp counts its numbers too ("# 1 2" makes 5: the vertex is dropped).
+  CHECK(error_of([] { import(temp_file("vcomment.obj", "v 0 0 0 # 1 2\n" + kTriangle + "f 2 3 4\n")); }) ==
+        "/tmp/girtd_frontend_test_vcomment.obj:1: a comment after 'v' (assimp 5.2.5 counts its numbers too): put it on a "
+        "line of its own");
+  // An mtllib naming the model: assimp's MTL reader would run on the OBJ text (and can crash).
+  CHECK(error_of([] { import(temp_file("self.obj", "mtllib girtd_frontend_test_self.obj\n" + kTriangle + "f 1 2 3\n")); }) ==
+        "/tmp/girtd_frontend_test_self.obj:1: mtllib names the model file itself");
+  // OFF indices are digits only: assimp reads "+3" as 0.
+  CHECK(error_of([] { import(temp_file("plus.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 2 +3\n")); }) ==
+        "/tmp/girtd_frontend_test_plus.off:7: vertex index +3 is out of range (the file has 4 vertices, counted from 0)");
+  // PLY: a second face element overruns assimp's arrays; a sign on an unsigned value slides the line.
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty uchar flag\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";
+  CHECK(error_of([&] {
+          import(temp_file("faces2.ply", ply + "element face 1\nproperty list uchar int vertex_indices\nend_header\n"));
+        }) == "/tmp/girtd_frontend_test_faces2.ply:10: a second 'face' element (assimp 5.2.5 overruns its arrays on it)");
+  CHECK(error_of([&] {
+          import(temp_file("sign.ply", ply + "end_header\n0 0 0 0\n-1 1 0 0\n0 0 1 0\n3 0 1 2\n"));
+        }) == "/tmp/girtd_frontend_test_sign.ply:12: element 'vertex' 1: '-1' is not an integer of its type (property flag)");
   // OFF: a comment line among the faces is read as a face of 0 corners, and the last face is lost.
   CHECK(error_of([] {
           import(temp_file("comment.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n# faces\n3 0 1 2\n3 1 3 2\n"));
@@ -113,11 +135,11 @@ TEST_CASE("model messages: what assimp 5.2.5 would misread without a word is ref
         "/tmp/girtd_frontend_test_dot.obj:1: '.5' is not a number assimp 5.2.5 reads (it would drop the vertex): write "
         "0.5");
   CHECK(error_of([] { import(temp_file("zero.obj", kTriangle + "f 01 2 3\n")); }) ==
-        "/tmp/girtd_frontend_test_zero.obj:5: corner '01': an index assimp 5.2.5 misreads (write it as a plain integer: "
-        "no leading '0' or '+', at most 10 digits)");
+        "/tmp/girtd_frontend_test_zero.obj:5: corner '01': an index assimp 5.2.5 misreads (write a plain non-zero "
+        "integer: no leading '0' or '+', at most 2147483647)");
   CHECK(error_of([] { import(temp_file("cont.obj", kTriangle + "f 1 2 \\\n\nf 1 2 3\n")); }) ==
-        "/tmp/girtd_frontend_test_cont.obj:6: a '\\' continuation runs into an empty line (assimp 5.2.5 would lose the "
-        "next statement)");
+        "/tmp/girtd_frontend_test_cont.obj:6: a '\\' continuation runs into an empty line or another '\\' (assimp 5.2.5 "
+        "would lose what follows)");
   CHECK(error_of([] {
           import(temp_file("strips.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                                          "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
