@@ -182,13 +182,20 @@ uint64_t precheck_stl(const std::string& path, uint64_t size) {
     if (const int line = odd_line_end(data)) fail(path, line, kOddLineEnd);
     std::vector<std::string_view> tok;
     uint64_t facets = 0;  // "facet normal": several may share a line; a solid may be named "facet"
-    int line = 0;
+    int corners = 0;      // of the facet being read: assimp 5.2.5 throws (and leaks) on other than 3
+    int line = 0, facet_line = 0;
     for (size_t at = 0; at < data.size(); ++line) {
       size_t end = data.find('\n', at);
       if (end == std::string::npos) end = data.size();
       split_tokens(std::string_view(data).substr(at, end - at), tok);
       for (size_t k = 0; k < tok.size(); ++k) {
-        if (tok[k] == "facet" && k + 1 < tok.size() && tok[k + 1] == "normal") ++facets;
+        if (tok[k] == "facet" && k + 1 < tok.size() && tok[k + 1] == "normal") {
+          if (facets > 0 && corners != 3) fail(path, facet_line, "a facet of " + std::to_string(corners) + " vertices, not 3");
+          ++facets;
+          corners = 0;
+          facet_line = line + 1;
+        }
+        if (tok[k] == "vertex") ++corners;
         if (tok[k] == "vertex" || tok[k] == "normal")
           for (size_t c = k + 1; c <= k + 3; ++c) {
             if (c >= tok.size()) fail(path, line + 1, "'" + std::string(tok[k]) + "' with fewer than 3 numbers");
@@ -198,6 +205,7 @@ uint64_t precheck_stl(const std::string& path, uint64_t size) {
       }
       at = end + 1;
     }
+    if (facets > 0 && corners != 3) fail(path, facet_line, "a facet of " + std::to_string(corners) + " vertices, not 3");
     return facets;
   }
   if (size < 84)

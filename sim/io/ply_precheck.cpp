@@ -161,6 +161,9 @@ PlyHeader read_header(const std::string& path, const std::string& data) {
       if (list && (!ply_type(tok[2], p.count_type) || !p.count_type.integer))
         fail(path, no, "a list's length type must be an integer type, not '" + std::string(tok[2]) + "'");
       h.elements.back().properties.push_back(p);
+    } else if (tok[0] != "format") {
+      fail(path, no, "'" + std::string(tok[0]) + "' is not a PLY header line (format, element, property, comment, "
+                         "obj_info, end_header)");
     }
   }
 }
