@@ -67,9 +67,8 @@ bool plain_digits(std::string_view t) {
 // OFF: the header's counts against the file size and the limits, then every
 // vertex and face line: a face's corner count (what assimp allocates from),
 // its indices, NaN coordinates. Returns the polygons (faces of 3 or more corners).
-uint64_t precheck_off(const std::string& path, uint64_t size) {
-  std::string text(static_cast<size_t>(size), '\0');
-  std::ifstream(path, std::ios::binary).read(text.data(), static_cast<std::streamsize>(size));
+uint64_t precheck_off(const std::string& path, const std::string& text) {
+  const uint64_t size = text.size();
   if (const int line = odd_line_end(text)) fail(path, line, kOddLineEnd);
   OffLines lines(path, text);
   std::vector<std::string_view> tok;
@@ -170,9 +169,8 @@ double float_at(const char* p) {
 // first): binary when the size is 84 + 50 x the count at byte 80, whatever
 // the header's text ("solid" starts many binary headers), else ASCII when
 // it starts with "solid" after any blanks.
-uint64_t precheck_stl(const std::string& path, uint64_t size) {
-  std::string data(static_cast<size_t>(size), '\0');
-  std::ifstream(path, std::ios::binary).read(data.data(), static_cast<std::streamsize>(size));
+uint64_t precheck_stl(const std::string& path, const std::string& data) {
+  const uint64_t size = data.size();
   uint32_t n = 0;
   if (size >= 84)
     for (int i = 3; i >= 0; --i) n = (n << 8) | static_cast<unsigned char>(data[80 + static_cast<size_t>(i)]);
@@ -236,10 +234,14 @@ bool is_checked_model_format(const std::string& lower_ext) {
 
 uint64_t precheck_model(const std::string& path, const std::string& lower_ext, uint64_t size,
                         std::vector<std::string>& warnings) {
-  if (lower_ext == ".obj") return precheck_obj(path, size, warnings);
-  if (lower_ext == ".off") return precheck_off(path, size);
-  if (lower_ext == ".ply") return precheck_ply(path, size);
-  return precheck_stl(path, size);
+  std::ifstream in(path, std::ios::binary);  // read once, for every check and count below
+  std::string data(static_cast<size_t>(size), '\0');
+  in.read(data.data(), static_cast<std::streamsize>(size));
+  data.resize(static_cast<size_t>(in.gcount()));
+  if (lower_ext == ".obj") return precheck_obj(path, data, warnings);
+  if (lower_ext == ".off") return precheck_off(path, data);
+  if (lower_ext == ".ply") return precheck_ply(path, data);
+  return precheck_stl(path, data);
 }
 
 }  // namespace girtd

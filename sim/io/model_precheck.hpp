@@ -17,7 +17,7 @@ namespace girtd {
 // ".obj", ".off", ".ply", ".stl" (lower case): the formats with a check here.
 bool is_checked_model_format(const std::string& lower_ext);
 
-// Dispatches on the extension; `size` is the file's size in bytes. Returns
+// Reads the file once (`size` bytes) and dispatches on the extension. Returns
 // the polygons (faces of 3 or more corners) the file holds, for checking
 // what assimp returns against; appends what it can go on from (an OBJ's
 // missing material library) to `warnings`.
@@ -26,10 +26,10 @@ uint64_t precheck_model(const std::string& path, const std::string& lower_ext, u
 
 // The OBJ check (obj_precheck.cpp): every v and f statement; the material
 // libraries' warnings. Returns the polygons.
-uint64_t precheck_obj(const std::string& path, uint64_t size, std::vector<std::string>& warnings);
+uint64_t precheck_obj(const std::string& path, const std::string& text, std::vector<std::string>& warnings);
 
 // The PLY check (ply_precheck.cpp): header, then every element instance, so
 // no list length reaches assimp unchecked. Returns the polygons.
-uint64_t precheck_ply(const std::string& path, uint64_t size);
+uint64_t precheck_ply(const std::string& path, const std::string& data);
 
 }  // namespace girtd

@@ -243,9 +243,7 @@ void check_vertex(const std::string& path, int line, int64_t vertex, const std::
 
 }  // namespace
 
-uint64_t precheck_obj(const std::string& path, uint64_t size, std::vector<std::string>& warnings) {
-  std::string text(static_cast<size_t>(size), '\0');
-  std::ifstream(path, std::ios::binary).read(text.data(), static_cast<std::streamsize>(size));
+uint64_t precheck_obj(const std::string& path, const std::string& text, std::vector<std::string>& warnings) {
   if (text.rfind("\xEF\xBB\xBF", 0) == 0)
     fail(path, 1, "the file starts with a UTF-8 byte-order mark (assimp 5.2.5 would lose its first statement)");
   if (const int line = odd_line_end(text)) fail(path, line, kOddLineEnd);

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <string_view>
 #include <vector>
 
@@ -212,7 +211,6 @@ uint64_t walk_ascii(const std::string& path, const std::string& data, const PlyH
         if (!p.is_list) {
           const std::string_view v = value(p.name.c_str());
           double d = 0;
-          int64_t n = 0;
           // assimp 5.2.5 throws a parse error naming no line (and leaks) on a value that is no number.
           if (p.type.integer ? !integer_fits(v, p.type) : !parse_real(v, d))
             fail(path, no, where(e, i) + ": '" + std::string(v) + "' is not " +
@@ -362,12 +360,7 @@ class BinaryWalk {
 
 }  // namespace
 
-uint64_t precheck_ply(const std::string& path, uint64_t size) {
-  std::ifstream in(path, std::ios::binary);
-  std::string data;
-  data.resize(static_cast<size_t>(size));
-  in.read(data.data(), static_cast<std::streamsize>(size));
-  data.resize(static_cast<size_t>(in.gcount()));
+uint64_t precheck_ply(const std::string& path, const std::string& data) {
   const PlyHeader h = read_header(path, data);
   const bool ascii = h.format == PlyFormat::kAscii;
   if (const int line = odd_line_end(std::string_view(data).substr(0, ascii ? data.size() : h.body)))
