@@ -8,6 +8,7 @@
 
 #include "backends/backend.hpp"
 #include "backends/dump_tap.hpp"
+#include "common/input_error.hpp"
 #include "wave/wave_options.hpp"
 #include "had/frame_buffer.hpp"
 #include "io/png_io.hpp"
@@ -21,6 +22,9 @@ struct RenderOutput {
   std::vector<uint16_t> z;          // the Z buffer after the last frame
   std::vector<RgbImage> per_frame;  // with keep_all_frames
   std::vector<std::string> wave_files;  // the waveform and its .gtkw and pixel log
+  // Bad input found only at the end of a run (a --wave window or scope that
+  // recorded nothing): the caller reports it, nothing is written.
+  std::optional<InputError> problem;
 };
 
 struct RenderOptions {

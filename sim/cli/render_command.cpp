@@ -152,6 +152,10 @@ int run_render(const RenderArgs& a) {
     out = render_trace(trace, *backend, params, opt);
     out.stats.frontend = input.frontend;
   }
+  if (out.problem) {  // not thrown: see WaveFiles
+    std::fprintf(stderr, "%s\n", out.problem->formatted().c_str());
+    return 2;
+  }
 
   ReportContext ctx;
   ctx.backend = pipelined ? a.backend : backend->name();

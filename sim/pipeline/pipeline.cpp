@@ -62,7 +62,11 @@ RenderOutput PipelineElaboration::run() {
   collect(out.stats);
   out.shown = engine_->shown();
   out.z = engine_->z_plane();
-  if (wave_) out.wave_files = wave_->finish(double(back_end_->end_tick()) * p_.base_tick_ns);
+  if (wave_) {
+    WaveFiles w = wave_->finish(double(back_end_->end_tick()) * p_.base_tick_ns);
+    out.wave_files = std::move(w.paths);
+    out.problem = std::move(w.problem);
+  }
   out.stats.wall_s = wall;  // the simulation (the frame read-out after it is not counted)
   return out;
 }

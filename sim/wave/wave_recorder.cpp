@@ -215,9 +215,8 @@ std::string gtkw_text(const std::vector<FstVar>& vars, const std::vector<std::st
   return o.str();
 }
 
-void run_fst2vcd(const std::string& fst, const std::string& vcd) {
-  if (run_process({"fst2vcd", "-f", fst, "-o", vcd}, true) != 0 || !fs::exists(vcd))
-    throw InputError("--wave", 0, "writing VCD needs fst2vcd (Debian package gtkwave): install it or ask for .fst");
+bool fst2vcd(const std::string& fst, const std::string& vcd) {
+  return run_process({"fst2vcd", "-f", fst, "-o", vcd}, true) == 0 && fs::exists(vcd);
 }
 
 // Scopes deep enough to name in a message.
@@ -279,19 +278,24 @@ void check_rtl_wave_scopes(const std::vector<std::string>& scopes, const Params&
   }
 }
 
-std::vector<std::string> WaveRecorder::finish(double run_end_ns) {
+WaveFiles WaveRecorder::finish(double run_end_ns) {
   tfp_->close();
+  WaveFiles out;
   if (last_dump_ns_ < 0) {
     char what[160];
     std::snprintf(what, sizeof what, "the window %.0f..%.0f ns recorded nothing: the run ended at %.0f ns",
                   opt_.t0_ns, std::min(opt_.t1_ns, 1e15), run_end_ns);
-    throw InputError("--wave-window", 0, what);
+    out.problem = InputError("--wave-window", 0, what);
+    return out;
   }
   const std::vector<FstVar> vars = read_hierarchy(fst_tmp_);
   for (const std::string& s : opt_.scopes) {
     bool found = false;
     for (const FstVar& v : vars) found = found || under(v.scope, s);
-    if (!found) throw InputError("--wave-scope", 0, "'" + s + "' recorded nothing (scopes include:" + scope_list(vars) + ")");
+    if (!found) {
+      out.problem = InputError("--wave-scope", 0, "'" + s + "' recorded nothing (scopes include:" + scope_list(vars) + ")");
+      return out;
+    }
   }
   if (has_rtl_) std::ofstream(pixels_tmp_) << pixel_log_;  // approx pushes no RTL pixels
   else fs::remove(opt_.path.substr(0, opt_.path.size() - 4) + ".pixels.csv");  // not an earlier run's
@@ -299,7 +303,11 @@ std::vector<std::string> WaveRecorder::finish(double run_end_ns) {
   const std::string gtkw = stem + ".gtkw", pixels = stem + ".pixels.csv";
   std::ofstream(gtkw + ".partial") << gtkw_text(vars, stage_names_, fs::absolute(opt_.path).string(), opt_.t0_ns);
   if (opt_.vcd()) {
-    run_fst2vcd(fst_tmp_, opt_.path + ".partial");
+    if (!fst2vcd(fst_tmp_, opt_.path + ".partial")) {
+      fs::remove(gtkw + ".partial");
+      out.problem = InputError("--wave", 0, "writing VCD needs fst2vcd (Debian package gtkwave): install it or ask for .fst");
+      return out;
+    }
     fs::remove(fst_tmp_);
     fs::rename(opt_.path + ".partial", opt_.path);
   } else {
@@ -307,9 +315,12 @@ std::vector<std::string> WaveRecorder::finish(double run_end_ns) {
   }
   fs::rename(gtkw + ".partial", gtkw);
   finished_ = true;
-  if (!has_rtl_) return {opt_.path, gtkw};
-  fs::rename(pixels_tmp_, pixels);
-  return {opt_.path, gtkw, pixels};
+  out.paths = {opt_.path, gtkw};
+  if (has_rtl_) {
+    fs::rename(pixels_tmp_, pixels);
+    out.paths.push_back(pixels);
+  }
+  return out;
 }
 
 }  // namespace girtd

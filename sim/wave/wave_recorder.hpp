@@ -11,9 +11,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "common/input_error.hpp"
 #include "pipeline/stage_activity.hpp"
 #include "wave/wave_options.hpp"
 
@@ -31,6 +33,15 @@ struct Params;
 // `pipeline...` paths: against the stages the run elaborated.
 void check_rtl_wave_scopes(const std::vector<std::string>& scopes, const Params& p);
 void check_pipeline_wave_scopes(const std::vector<std::string>& scopes, const std::vector<std::string>& stages);
+
+// What finish() leaves: the files in place, or the input problem that kept
+// them from it. Returned, not thrown: it comes after sc_start, and an
+// exception there trips ASan, which cannot follow SystemC's coroutine
+// stacks (Debian's libsystemc has no fiber annotations).
+struct WaveFiles {
+  std::vector<std::string> paths;  // the waveform, its .gtkw, the pixel log (rtl)
+  std::optional<InputError> problem;
+};
 
 class WaveRecorder {
  public:
@@ -53,9 +64,9 @@ class WaveRecorder {
   void log_pixel(double t_ns, int x, int y);
 
   // Closes the file, checks that the window and every --wave-scope
-  // recorded something (InputError if not), writes the .gtkw and the .vcd
-  // if asked, and moves every file into place. Returns their paths.
-  std::vector<std::string> finish(double run_end_ns);
+  // recorded something, writes the .gtkw and the .vcd if asked, and moves
+  // every file into place.
+  WaveFiles finish(double run_end_ns);
 
  private:
   struct StageProbe;
