@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
+#include <vector>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -20,6 +22,44 @@ inline int line_at(const std::string& text, size_t byte) {
 }
 
 }  // namespace json_text_detail
+
+// The line of every object key in valid JSON text, by dotted path
+// ("ep.color.frac_bits"; keys inside arrays are not listed). nlohmann's
+// parser keeps no positions, so the text is walked once more.
+inline std::map<std::string, int> json_key_lines(const std::string& text) {
+  struct Open {
+    char bracket;     // '{' or '['
+    std::string key;  // an object's key being read
+  };
+  std::map<std::string, int> lines;
+  std::vector<Open> open;
+  std::string last_string;
+  int line = 1, last_string_line = 1;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') {
+      ++line;
+    } else if (c == '"') {
+      last_string.clear();
+      last_string_line = line;
+      for (++i; i < text.size() && text[i] != '"'; ++i) last_string += text[i] == '\\' ? text[++i] : text[i];
+    } else if (c == ':' && !open.empty()) {
+      open.back().key = last_string;
+      std::string dotted;
+      bool in_array = false;
+      for (const Open& o : open) {
+        in_array = in_array || o.bracket == '[';
+        dotted += (dotted.empty() ? "" : ".") + o.key;
+      }
+      if (!in_array) lines[dotted] = last_string_line;
+    } else if (c == '{' || c == '[') {
+      open.push_back({c, ""});
+    } else if ((c == '}' || c == ']') && !open.empty()) {
+      open.pop_back();
+    }
+  }
+  return lines;
+}
 
 inline nlohmann::json parse_json_text(const std::string& text, const std::string& path) {
   try {

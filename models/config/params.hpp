@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -83,7 +84,9 @@ struct Params {
   // Built-in configuration with `override_json` merged over it. Unknown keys
   // and wrong types raise InputError naming `origin`.
   static Params with_overrides(const nlohmann::json& override_json, const std::string& origin);
-  static Params from_file(const std::string& path);
+  // --config FILE...: each file merged over the built-in one in order, the
+  // later winning; a refused value is reported at its key's line.
+  static Params from_files(const std::vector<std::string>& paths);
 
   // These parameters with the thesis program's formats in place of the
   // hardware EPs' (the DDA datapath then is the program's 32-bit registers).

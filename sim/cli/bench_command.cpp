@@ -59,7 +59,7 @@ std::vector<std::string> sample_traces() {
 
 }  // namespace
 
-int run_bench(const std::string& config, const std::string& out_dir, bool pipeline_only) {
+int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only) {
   const Params params = load_params(config);
   if (pipeline_only) {
     const PipelineBench pb = run_pipeline_bench(params, config, out_dir);

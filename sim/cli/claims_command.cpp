@@ -218,7 +218,7 @@ void preparer_rows(const Params& p, std::vector<ClaimRow>& rows) {
 
 }  // namespace
 
-int run_claims(const std::string& config) {
+int run_claims(const ConfigFiles& config) {
   const Params p = load_params(config);
   std::vector<ClaimRow> rows;
   dda_rows(p, rows);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/config_loader.hpp"
+
 namespace girtd {
 
 struct RenderArgs {
@@ -19,14 +21,14 @@ struct RenderArgs {
   std::vector<std::string> wave_scopes;
   std::optional<double> aa;
   std::string dump;  // LEVEL=FILE
-  std::string config;
+  ConfigFiles config;
   bool z_png = false;
   bool quiet = false;
 };
 
 int run_render(const RenderArgs& a);
-int run_claims(const std::string& config);
-int run_bench(const std::string& config, const std::string& out_dir, bool pipeline_only);
+int run_claims(const ConfigFiles& config);
+int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only);
 struct RegressArgs {
   std::vector<std::string> traces;  // empty: every trace under traces/
   int random = 0;                   // extra random triangles
@@ -34,7 +36,7 @@ struct RegressArgs {
   double stall = 0.3;               // back-pressure probability on every other triangle
   bool both_compare_modes = false;  // run ECL and TTL sequencing
   bool dda_only = false;            // skip the whole-back-end RTL (FIFO, HAD, cache, VRAM)
-  std::string config;
+  ConfigFiles config;
 };
 
 int run_regress(const RegressArgs& a);

@@ -8,6 +8,11 @@
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
 
+namespace {
+constexpr const char* kConfigHelp =
+    "JSON file merged over config/girtd.json; repeat to merge several in order (the later wins)";
+}
+
 int main(int argc, char** argv) {
   using namespace girtd;
   setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);  // before SystemC starts
@@ -26,17 +31,18 @@ int main(int argc, char** argv) {
   render->add_option("--wave-scope", ra.wave_scopes, "module path to record (repeatable)");
   render->add_option("--aa", ra.aa, "antialiasing width Q for every frame (overrides the trace)");
   render->add_option("--dump", ra.dump, "LEVEL=FILE: record the stream at a stage boundary");
-  render->add_option("--config", ra.config, "JSON file merged over config/girtd.json");
+  render->add_option("--config", ra.config, kConfigHelp)->allow_extra_args(false);
   render->add_flag("--z-png", ra.z_png, "also write z.png (16-bit depth)");
   render->add_flag("--quiet", ra.quiet, "print nothing on success");
 
-  std::string claims_config;
+  ConfigFiles claims_config;
   CLI::App* claims = app.add_subcommand("claims", "the thesis' claims (GIRTD.md §9) against measurements");
-  claims->add_option("--config", claims_config, "JSON file merged over config/girtd.json");
+  claims->add_option("--config", claims_config, kConfigHelp)->allow_extra_args(false);
 
-  std::string bench_config, bench_out = "out/bench";
+  ConfigFiles bench_config;
+  std::string bench_out = "out/bench";
   CLI::App* bench = app.add_subcommand("bench", "speed and error tables of the back ends");
-  bench->add_option("--config", bench_config, "JSON file merged over config/girtd.json");
+  bench->add_option("--config", bench_config, kConfigHelp)->allow_extra_args(false);
   bench->add_option("--out", bench_out, "output directory")->capture_default_str();
   bool bench_pipeline = false;
   bench->add_flag("--pipeline", bench_pipeline, "only the SystemC pipeline's table (approx against rtl); exit 1 on a disagreement");
@@ -49,7 +55,7 @@ int main(int argc, char** argv) {
   regress->add_option("--stall", rg.stall, "back-pressure probability on every other triangle")->capture_default_str();
   regress->add_flag("--both-compare-modes", rg.both_compare_modes, "run same-cycle and pipelined X/Y compare");
   regress->add_flag("--dda-only", rg.dda_only, "compare the DDA alone, not the whole RTL back end");
-  regress->add_option("--config", rg.config, "JSON file merged over config/girtd.json");
+  regress->add_option("--config", rg.config, kConfigHelp)->allow_extra_args(false);
 
   try {
     app.parse(argc, argv);

@@ -42,10 +42,10 @@ std::vector<std::string> sample_inputs() {
 
 // One `girtd render` in a child process; its report, or null when it failed.
 nlohmann::json render_in_child(const std::string& input, const std::string& backend, const std::string& dir,
-                               const std::string& config, const std::vector<std::string>& extra = {}) {
+                               const ConfigFiles& config, const std::vector<std::string>& extra = {}) {
   std::vector<std::string> args = {self_executable(), "render", input, "--backend", backend, "--out", dir, "--quiet"};
   args.insert(args.end(), extra.begin(), extra.end());
-  if (!config.empty()) args.insert(args.end(), {"--config", config});
+  for (const std::string& a : config_args(config)) args.push_back(a);
   if (run_process(args, false) != 0) return nullptr;
   std::ifstream in(dir + "/report.json");
   return nlohmann::json::parse(in);
@@ -63,7 +63,7 @@ bool same_counts(const nlohmann::json& a, const nlohmann::json& b) {
 
 }  // namespace
 
-PipelineBench run_pipeline_bench(const Params& params, const std::string& config, const std::string& out_dir) {
+PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir) {
   PipelineBench b;
   b.markdown =
       "\n## The SystemC pipeline: approx against rtl (and golden's frame)\n\n"
@@ -131,7 +131,7 @@ PipelineBench run_pipeline_bench(const Params& params, const std::string& config
   return b;
 }
 
-WaveCostBench run_wave_cost_bench(const Params& params, const std::string& config, const std::string& out_dir) {
+WaveCostBench run_wave_cost_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir) {
   WaveCostBench b;
   // The demo trace's DDA parameter sets: all there at once, so the back end
   // never idles (idle ticks are skipped, which would flatter the pipeline).

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/config_loader.hpp"
 #include "config/params.hpp"
 
 namespace girtd {
@@ -23,8 +24,8 @@ struct PipelineBench {
   int failures = 0;
 };
 
-// `config`: the --config file passed on to every render ("" for none).
-PipelineBench run_pipeline_bench(const Params& params, const std::string& config, const std::string& out_dir);
+// `config`: the --config files passed on to every render.
+PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir);
 
 // The cost of the coupling and of the waveform ability, on the demo trace:
 // rtl in the pipeline, the bare Verilated harness, the pipeline keeping step
@@ -34,6 +35,6 @@ struct WaveCostBench {
   std::string markdown;
   nlohmann::json rows = nlohmann::json::array();
 };
-WaveCostBench run_wave_cost_bench(const Params& params, const std::string& config, const std::string& out_dir);
+WaveCostBench run_wave_cost_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir);
 
 }  // namespace girtd

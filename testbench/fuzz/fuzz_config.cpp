@@ -4,6 +4,6 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = girtd::fuzz::as_file(data, size, "fuzz_config.json");
-  girtd::fuzz::expect_only_input_errors([&] { girtd::Params::from_file(path); });
+  girtd::fuzz::expect_only_input_errors([&] { girtd::Params::from_files({path}); });
   return 0;
 }

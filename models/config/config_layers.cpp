@@ -1,0 +1,68 @@
+#include "config/config_layers.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "common/json_text.hpp"
+#include "girtd/default_config.hpp"
+
+namespace girtd {
+
+using nlohmann::json;
+
+ConfigLayers ConfigLayers::builtin() {
+  ConfigLayers c;
+  const std::string text = kDefaultConfigJson;
+  c.merged_ = json::parse(text);
+  for (const auto& [key, line] : json_key_lines(text)) c.places_[key] = {kDefaultConfigPath, line};
+  return c;
+}
+
+void ConfigLayers::merge_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot open configuration file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const json patch = parse_json_text(text.str(), path);
+  if (!patch.is_object()) throw InputError(path, 1, "a configuration must be a JSON object");
+  merge(merged_, patch, "", path, json_key_lines(text.str()));
+  files_.push_back(path);
+}
+
+void ConfigLayers::merge_json(const json& patch, const std::string& origin) {
+  if (!patch.is_object()) throw InputError(origin, 0, "a configuration must be a JSON object");
+  merge(merged_, patch, "", origin, {});
+}
+
+// Refuses keys `base` does not have and values of another JSON type: a typo
+// in a config must not be silently ignored.
+void ConfigLayers::merge(json& base, const json& patch, const std::string& path, const std::string& origin,
+                         const std::map<std::string, int>& lines) {
+  for (auto it = patch.begin(); it != patch.end(); ++it) {
+    const std::string key = path.empty() ? it.key() : path + "." + it.key();
+    const auto line = lines.find(key);
+    const int at = line == lines.end() ? 0 : line->second;
+    if (!base.contains(it.key())) throw InputError(origin, at, key + ": unknown configuration key");
+    json& target = base[it.key()];
+    if (target.is_object()) {
+      if (!it->is_object()) throw InputError(origin, at, key + ": must be an object");
+      merge(target, *it, key, origin, lines);
+      continue;
+    }
+    // A real may replace a real; an integer field takes integers only.
+    const bool both_numbers =
+        target.is_number() && it->is_number() && (!target.is_number_integer() || it->is_number_integer());
+    if (!both_numbers && target.type() != it->type())
+      throw InputError(origin, at, key + ": has the wrong type (expected " + std::string(target.type_name()) + ")");
+    target = *it;
+    places_[key] = {origin, at};
+  }
+}
+
+InputError ConfigLayers::error(const std::string& key, const std::string& what) const {
+  const auto it = places_.find(key);
+  if (it == places_.end()) return InputError(kDefaultConfigPath, 0, key + ": " + what);
+  return InputError(it->second.file, it->second.line, key + ": " + what);
+}
+
+}  // namespace girtd

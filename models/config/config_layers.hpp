@@ -1,0 +1,46 @@
+// The configuration as layers: the built-in config/girtd.json, then each
+// --config file merged over it in order (the later wins). Every leaf key
+// remembers the file and line that set it last, so a value refused later
+// (a range, a relation) is reported where the user wrote it:
+// "FILE:LINE: key: what".
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "common/input_error.hpp"
+
+namespace girtd {
+
+class ConfigLayers {
+ public:
+  // config/girtd.json as built in.
+  static ConfigLayers builtin();
+
+  // Merges one user file; unknown keys and values of another JSON type are
+  // refused at their line.
+  void merge_file(const std::string& path);
+  // Merges JSON that has no text (tests, sweep points): errors name `origin`.
+  void merge_json(const nlohmann::json& patch, const std::string& origin);
+
+  const nlohmann::json& merged() const { return merged_; }
+  const std::vector<std::string>& files() const { return files_; }
+  // The error for a value refused after merging, at the key's last setting.
+  InputError error(const std::string& key, const std::string& what) const;
+
+ private:
+  struct Place {
+    std::string file;
+    int line = 0;
+  };
+  void merge(nlohmann::json& base, const nlohmann::json& patch, const std::string& path, const std::string& origin,
+             const std::map<std::string, int>& lines);
+  nlohmann::json merged_;
+  std::map<std::string, Place> places_;
+  std::vector<std::string> files_;
+};
+
+}  // namespace girtd
