@@ -1,7 +1,7 @@
 # Turns config/girtd.json (the single description of widths, formats and
 # timings) into a C++ header that embeds it verbatim. The C++ side parses the
 # embedded text at start-up (models/config/params.cpp), so no number is ever
-# written twice. The SystemVerilog package will be generated here too.
+# written twice.
 function(girtd_generate_config_header json_file out_header)
   file(READ ${json_file} GIRTD_CONFIG_JSON)
   string(JSON _probe ERROR_VARIABLE _err GET "${GIRTD_CONFIG_JSON}" ep)
@@ -12,53 +12,48 @@ function(girtd_generate_config_header json_file out_header)
   configure_file(${CMAKE_SOURCE_DIR}/cmake/default_config.hpp.in ${out_header} @ONLY)
 endfunction()
 
-# The SystemVerilog side of the same description: a package of widths and the
-# U >= 2 product PROM of §4.2.7 as a case table (two 1.P operands < 1.0 in,
-# the 8-bit 0.8 product out), both computed here from config/girtd.json.
-function(girtd_generate_hw_package json_file out_dir)
-  file(READ ${json_file} J)
-  macro(_get var)
-    string(JSON ${var} GET "${J}" ${ARGN})
-  endmacro()
-  _get(COLOR_INT ep color int_bits)
-  _get(COLOR_FRAC ep color frac_bits)
-  _get(COLOR_OUT ep color out_bits)
-  _get(T_INT ep t int_bits)
-  _get(T_FRAC ep t frac_bits)
-  _get(T_OUT ep t out_bits)
-  _get(Z_INT ep z int_bits)
-  _get(Z_FRAC ep z frac_bits)
-  _get(Z_OUT ep z out_bits)
-  _get(D_INT ep d int_bits)
-  _get(D_FRAC ep d frac_bits)
-  _get(XY_W ep xy_bits)
-  _get(NORM_FRAC nf norm_frac_bits)
-  _get(PROM_FRAC nf prom_frac_bits)
-  _get(OUT_LATENCY dda output_latency_clocks)
-  _get(FIFO_DEPTH fifo dda_had_depth)
-  _get(FIFO_MAX_DEPTH fifo max_depth)
-  if(OUT_LATENCY LESS 1)
-    message(FATAL_ERROR "${json_file}: dda.output_latency_clocks must be at least 1 for the RTL")
+# The SystemVerilog side: girtd_gen_rtl (models/config/gen_rtl_main.cpp)
+# writes the package, the PROM table and rtl_build.hpp from the merged
+# configuration, with the same C++ that derives every layout for the models
+# (one definition). Verilator runs at configure time (verilate()), so the
+# generator is compiled and run here, at configure time; it is compiled again
+# only when one of its sources changed.
+# GIRTD_RTL_CONFIG: a configuration file merged over config/girtd.json for
+# the RTL (an RTL variant's build, sim/rtl/rtl_variants.cpp); empty for the
+# default build.
+function(girtd_generate_rtl_package out_dir)
+  set(src ${CMAKE_SOURCE_DIR}/models)
+  set(sources ${src}/config/gen_rtl_main.cpp ${src}/config/params.cpp ${src}/config/config_layers.cpp
+              ${src}/config/rtl_layout.cpp ${src}/config/rtl_package.cpp)
+  file(GLOB headers ${src}/config/*.hpp ${src}/common/*.hpp ${src}/dda/*.hpp)
+  set(tool ${CMAKE_BINARY_DIR}/generated/girtd_gen_rtl)
+  set(stale FALSE)
+  if(NOT EXISTS ${tool})
+    set(stale TRUE)
   endif()
-  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${json_file})
-  configure_file(${CMAKE_SOURCE_DIR}/cmake/girtd_pkg.sv.in ${out_dir}/girtd_pkg.sv @ONLY)
-  # What the C++ drivers must know about the built RTL (elaboration-time values).
-  configure_file(${CMAKE_SOURCE_DIR}/cmake/built_rtl.hpp.in ${CMAKE_BINARY_DIR}/generated/girtd/built_rtl.hpp @ONLY)
-
-  math(EXPR top "(1 << ${PROM_FRAC}) - 1")
-  math(EXPR excess "2 * ${PROM_FRAC} - 8")
-  set(rows "")
-  foreach(a RANGE 0 ${top})
-    foreach(b RANGE 0 ${top})
-      if(excess GREATER_EQUAL 0)
-        math(EXPR p "(${a} * ${b}) >> ${excess}")
-      else()
-        math(EXPR p "(${a} * ${b}) << (-(${excess}))")
-      endif()
-      string(APPEND rows "      {${PROM_FRAC}'d${a}, ${PROM_FRAC}'d${b}}: prom_product = 8'd${p};\n")
-    endforeach()
+  foreach(f ${sources} ${headers} ${CMAKE_BINARY_DIR}/generated/girtd/default_config.hpp)
+    if(${f} IS_NEWER_THAN ${tool})
+      set(stale TRUE)
+    endif()
   endforeach()
-  set(PROM_ROWS "${rows}")
-  configure_file(${CMAKE_SOURCE_DIR}/cmake/dda_prom_table.svh.in ${out_dir}/dda_prom_table.svh @ONLY)
+  if(stale)
+    message(STATUS "Compiling girtd_gen_rtl (the RTL package generator)")
+    execute_process(
+      COMMAND ${CCACHE_PROGRAM} ${CMAKE_CXX_COMPILER} -std=c++17 -O1 -I${src} -I${CMAKE_BINARY_DIR}/generated
+              ${sources} -o ${tool}
+      RESULT_VARIABLE rc ERROR_VARIABLE err)
+    if(rc)
+      message(FATAL_ERROR "compiling girtd_gen_rtl failed:\n${err}")
+    endif()
+  endif()
+  set(config_args "")
+  if(GIRTD_RTL_CONFIG)
+    set(config_args --config ${GIRTD_RTL_CONFIG})
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${GIRTD_RTL_CONFIG})
+  endif()
+  execute_process(COMMAND ${tool} ${config_args} ${out_dir} RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(rc)
+    message(FATAL_ERROR "girtd_gen_rtl: ${err}")
+  endif()
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${sources} ${headers})
 endfunction()
-

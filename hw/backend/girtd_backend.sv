@@ -8,13 +8,13 @@ module girtd_backend (
     input  logic clk_i,
     input  logic rst_ni,
     // Timing and options (run-time)
-    input  logic [7:0]  dda_period_ticks_i,
-    input  logic [15:0] had_access_ticks_i,
-    input  logic [15:0] had_blend_ticks_i,
-    input  logic [15:0] vram_cycle_ticks_i,
-    input  logic [23:0] clear_ticks_i,
-    input  logic [23:0] vram_steal_period_ticks_i,
-    input  logic [$clog2(girtd_pkg::FIFO_MAX_DEPTH + 1)-1:0] fifo_limit_i,
+    input  logic [girtd_pkg::DDA_PERIOD_W-1:0] dda_period_ticks_i,
+    input  logic [girtd_pkg::TIME_W-1:0]       had_access_ticks_i,
+    input  logic [girtd_pkg::TIME_W-1:0]       had_blend_ticks_i,
+    input  logic [girtd_pkg::TIME_W-1:0]       vram_cycle_ticks_i,
+    input  logic [girtd_pkg::LONG_TIME_W-1:0]  clear_ticks_i,
+    input  logic [girtd_pkg::LONG_TIME_W-1:0]  vram_steal_period_ticks_i,
+    input  logic [girtd_pkg::FIFO_COUNT_W-1:0] fifo_limit_i,
     input  logic        write_behind_i,
     input  logic        prefetch_i,
     input  logic        dirty_bits_i,
@@ -34,30 +34,30 @@ module girtd_backend (
     input  logic signed [girtd_pkg::D_W-1:0]     d3_i, d3_dx_i, d3_dy_i,
     // Frame control
     input  logic        clear_i,
-    input  logic [23:0] background_i,
+    input  logic [3*girtd_pkg::COLOR_OUT-1:0] background_i,
     input  logic        flush_i,
     input  logic        swap_i,
     output logic        idle_o,  // DDA idle, FIFO empty, HAD idle, VRAM free
     output logic        front_o,
     // Probes: the DDA's state (models/dda state numbering) and whether this
     // tick is a DDA clock spent on a triangle.
-    output logic [3:0]  dda_state_o,
+    output logic [girtd_pkg::DDA_STATE_W-1:0] dda_state_o,
     output logic        dda_active_o,
     // ... and the pixel the DDA pushes into the FIFO on this tick, if any.
     output logic        pixel_push_o,
-    output logic [9:0]  pixel_x_o, pixel_y_o,
+    output logic [girtd_pkg::SCREEN_BITS-1:0] pixel_x_o, pixel_y_o,
     // Counters
-    output logic [47:0] dda_clocks_o,     // DDA clocks spent on triangles
-    output logic [47:0] dda_wait_ticks_o, // DDA clocks lost waiting on a full FIFO (in ticks)
-    output logic [31:0] pixels_generated_o,
-    output logic [31:0] written_o, blended_o, z_rejected_o, dropped_o, page_misses_o,
-    output logic [47:0] had_busy_ticks_o, had_vram_wait_ticks_o,
-    output logic [5:0]  fifo_max_o
+    output logic [girtd_pkg::TICK_COUNT_W-1:0] dda_clocks_o,     // DDA clocks spent on triangles
+    output logic [girtd_pkg::TICK_COUNT_W-1:0] dda_wait_ticks_o, // DDA clocks lost waiting on a full FIFO (in ticks)
+    output logic [girtd_pkg::COUNT_W-1:0] pixels_generated_o,
+    output logic [girtd_pkg::COUNT_W-1:0] written_o, blended_o, z_rejected_o, dropped_o, page_misses_o,
+    output logic [girtd_pkg::TICK_COUNT_W-1:0] had_busy_ticks_o, had_vram_wait_ticks_o,
+    output logic [girtd_pkg::FIFO_COUNT_W-1:0] fifo_max_o
 );
-  localparam int CW = $clog2(girtd_pkg::FIFO_MAX_DEPTH + 1);
+  localparam int CW = girtd_pkg::FIFO_COUNT_W;
 
   // DDA clock enable: one tick in dda_period_ticks_i.
-  logic [7:0] dda_tick_q;
+  logic [girtd_pkg::DDA_PERIOD_W-1:0] dda_tick_q;
   logic dda_en;
   assign dda_en = dda_tick_q == '0;
   always_ff @(posedge clk_i) begin
@@ -66,11 +66,14 @@ module girtd_backend (
   end
 
   logic out_valid, fifo_full, fifo_empty, fifo_pop, dda_active, dda_stall;
-  logic [9:0] ox, oy;
-  logic [7:0] orr, og, ob;
-  logic [8:0] onf;
-  logic [15:0] oz;
-  logic [3:0] dda_state;
+  logic [girtd_pkg::FIFO_X_W-1:0] ox;
+  logic [girtd_pkg::FIFO_Y_W-1:0] oy;
+  logic [girtd_pkg::FIFO_R_W-1:0] orr;
+  logic [girtd_pkg::FIFO_G_W-1:0] og;
+  logic [girtd_pkg::FIFO_B_W-1:0] ob;
+  logic [girtd_pkg::FIFO_NF_W-1:0] onf;
+  logic [girtd_pkg::FIFO_Z_W-1:0] oz;
+  logic [girtd_pkg::DDA_STATE_W-1:0] dda_state;
   dda u_dda (
       .clk_i, .rst_ni, .en_i(dda_en), .walk_fix_i, .pipelined_compare_i, .in_valid_i, .in_ready_o,
       .x0_i, .y0_i, .xmin_i, .xmax_i, .ymax_i, .q_zero_i, .q_k_i,
@@ -81,16 +84,16 @@ module girtd_backend (
       .state_o(dda_state));
 
   logic push;
-  logic [68:0] fifo_data;
+  logic [girtd_pkg::FIFO_W-1:0] fifo_data;
   logic [CW-1:0] fifo_count;
   assign push = dda_en && out_valid && !fifo_full;
-  pixel_fifo #(.W(69), .DEPTH(girtd_pkg::FIFO_MAX_DEPTH)) u_fifo (
+  pixel_fifo #(.W(girtd_pkg::FIFO_W), .DEPTH(girtd_pkg::FIFO_MAX_DEPTH)) u_fifo (
       .clk_i, .rst_ni, .limit_i(fifo_limit_i), .push_i(push), .data_i({ox, oy, orr, og, ob, onf, oz}),
       .full_o(fifo_full), .pop_i(fifo_pop), .data_o(fifo_data), .empty_o(fifo_empty), .count_o(fifo_count));
 
   logic vram_req, vram_we, vram_busy, vram_done, had_idle;
-  logic [15:0] vram_page;
-  logic [16*40-1:0] vram_wdata, vram_rdata;
+  logic [girtd_pkg::PAGE_NUMBER_W-1:0] vram_page;
+  logic [girtd_pkg::PAGE_PIXELS*girtd_pkg::CELL_W-1:0] vram_wdata, vram_rdata;
   had u_had (
       .clk_i, .rst_ni, .access_ticks_i(had_access_ticks_i), .blend_ticks_i(had_blend_ticks_i),
       .one_minus_exact_i, .write_behind_i, .prefetch_i, .dirty_bits_i, .fifo_empty_i(fifo_empty), .fifo_data_i(fifo_data),
@@ -112,13 +115,13 @@ module girtd_backend (
       fifo_max_o <= '0;
     end else begin
       if (dda_active) dda_clocks_o <= dda_clocks_o + 1'b1;
-      if (dda_stall) dda_wait_ticks_o <= dda_wait_ticks_o + 48'(dda_period_ticks_i);
+      if (dda_stall) dda_wait_ticks_o <= dda_wait_ticks_o + girtd_pkg::TICK_COUNT_W'(dda_period_ticks_i);
       if (push) pixels_generated_o <= pixels_generated_o + 1'b1;
-      if (6'(fifo_count) > fifo_max_o) fifo_max_o <= 6'(fifo_count);
+      if (fifo_count > fifo_max_o) fifo_max_o <= fifo_count;
     end
   end
 
-  assign idle_o = in_ready_o && !out_valid && dda_state == 4'd8 && fifo_empty && had_idle && !vram_busy;
+  assign idle_o = in_ready_o && !out_valid && dda_state == girtd_pkg::S_IDLE && fifo_empty && had_idle && !vram_busy;
   assign dda_state_o = dda_state;
   assign dda_active_o = dda_active;
   assign pixel_push_o = push;

@@ -31,29 +31,32 @@ module dda (
     input  logic signed [girtd_pkg::D_W-1:0]             d1_i, d1_dx_i, d1_dy_i,
     input  logic signed [girtd_pkg::D_W-1:0]             d2_i, d2_dx_i, d2_dy_i,
     input  logic signed [girtd_pkg::D_W-1:0]             d3_i, d3_dx_i, d3_dy_i,
-    // Pixel out: the 69-bit FIFO word
-    output logic       out_valid_o,
-    input  logic       out_ready_i,
-    output logic [9:0] out_x_o,
-    output logic [9:0] out_y_o,
-    output logic [7:0] out_r_o,
-    output logic [7:0] out_g_o,
-    output logic [7:0] out_b_o,
-    output logic [8:0] out_nf_o,
-    output logic [15:0] out_z_o,
+    // Pixel out: the fields of the FIFO word (girtd_pkg::FIFO_*)
+    output logic                                 out_valid_o,
+    input  logic                                 out_ready_i,
+    output logic [girtd_pkg::FIFO_X_W-1:0]       out_x_o,
+    output logic [girtd_pkg::FIFO_Y_W-1:0]       out_y_o,
+    output logic [girtd_pkg::FIFO_R_W-1:0]       out_r_o,
+    output logic [girtd_pkg::FIFO_G_W-1:0]       out_g_o,
+    output logic [girtd_pkg::FIFO_B_W-1:0]       out_b_o,
+    output logic [girtd_pkg::FIFO_NF_W-1:0]      out_nf_o,
+    output logic [girtd_pkg::FIFO_Z_W-1:0]       out_z_o,
     // Observation: a counted DDA clock, a clock lost to back-pressure, the state
-    output logic       active_o,
-    output logic       stall_o,
-    output logic [3:0] state_o
+    output logic                                 active_o,
+    output logic                                 stall_o,
+    output logic [girtd_pkg::DDA_STATE_W-1:0]    state_o
 );
   localparam int XY_W = girtd_pkg::XY_W;
   localparam int L = girtd_pkg::OUT_LATENCY;
 
-  // State encoding matches models/dda (DdaState) so traces compare directly.
-  localparam logic [3:0] S_CHECK = 4'd0, S_RIGHT = 4'd1, S_LSTEP = 4'd2, S_LEFT = 4'd3,
-                         S_WALK = 4'd4, S_RUN = 4'd5, S_YSTEP = 4'd6, S_WAIT = 4'd7, S_IDLE = 4'd8;
+  // State encoding generated from models/dda (DdaState), so traces compare directly.
+  localparam int SW = girtd_pkg::DDA_STATE_W;
+  localparam logic [SW-1:0] S_CHECK = girtd_pkg::S_CHECK, S_RIGHT = girtd_pkg::S_RIGHT, S_LSTEP = girtd_pkg::S_LSTEP,
+                            S_LEFT = girtd_pkg::S_LEFT, S_WALK = girtd_pkg::S_WALK, S_RUN = girtd_pkg::S_RUN,
+                            S_YSTEP = girtd_pkg::S_YSTEP, S_WAIT = girtd_pkg::S_WAIT, S_IDLE = girtd_pkg::S_IDLE;
+  localparam int SB = girtd_pkg::SCREEN_BITS;
 
-  logic [3:0] state_q, state_d, after_wait_q, after_wait_d;
+  logic [SW-1:0] state_q, state_d, after_wait_q, after_wait_d;
   logic walk_left_q, walk_left_d, first_q, first_d;
   logic [XY_W-1:0] xmin_q, xmax_q, ymax_q;
   logic q_zero_q;
@@ -91,22 +94,24 @@ module dda (
 
   // ---- Coverage, nf and the output stages ----
   logic [2:0] d_inside;
-  logic [8:0] n[3];
+  logic [girtd_pkg::NF_W-1:0] n[3];
   for (genvar i = 0; i < 3; i++) begin : g_norm
     dda_norm #(.W(girtd_pkg::D_W), .FRAC(girtd_pkg::D_FRAC), .NF(girtd_pkg::NORM_FRAC))
         u_norm (.d_i(d[i]), .q_zero_i(q_zero_q), .q_k_i(q_k_q), .inside_o(d_inside[i]), .n_o(n[i]));
   end
 
-  logic [7:0] r8, g8, b8, t8;
-  logic [15:0] z16;
-  logic [8:0] nf;
+  logic [girtd_pkg::COLOR_OUT-1:0] r8, g8, b8;
+  logic [girtd_pkg::T_OUT-1:0] t8;
+  logic [girtd_pkg::Z_OUT-1:0] z16;
+  logic [girtd_pkg::NF_W-1:0] nf;
   dda_saturate #(.W(girtd_pkg::COLOR_W), .FRAC(girtd_pkg::COLOR_FRAC), .OUT(girtd_pkg::COLOR_OUT)) u_sat_r (.value_i(r), .out_o(r8));
   dda_saturate #(.W(girtd_pkg::COLOR_W), .FRAC(girtd_pkg::COLOR_FRAC), .OUT(girtd_pkg::COLOR_OUT)) u_sat_g (.value_i(g), .out_o(g8));
   dda_saturate #(.W(girtd_pkg::COLOR_W), .FRAC(girtd_pkg::COLOR_FRAC), .OUT(girtd_pkg::COLOR_OUT)) u_sat_b (.value_i(b), .out_o(b8));
   dda_saturate #(.W(girtd_pkg::T_W), .FRAC(girtd_pkg::T_FRAC), .OUT(girtd_pkg::T_OUT)) u_sat_t (.value_i(t), .out_o(t8));
   dda_saturate #(.W(girtd_pkg::Z_W), .FRAC(girtd_pkg::Z_FRAC), .OUT(girtd_pkg::Z_OUT)) u_sat_z (.value_i(z), .out_o(z16));
   // T = 255 at the output means exactly 1.0.
-  dda_nf u_nf (.n1_i(n[0]), .n2_i(n[1]), .n3_i(n[2]), .t_i(t8 == 8'hFF ? 9'd256 : {1'b0, t8}), .nf_o(nf));
+  localparam logic [girtd_pkg::NF_W-1:0] NF_ONE = girtd_pkg::NF_W'(1) << girtd_pkg::NORM_FRAC;
+  dda_nf u_nf (.n1_i(n[0]), .n2_i(n[1]), .n3_i(n[2]), .t_i(t8 == '1 ? NF_ONE : girtd_pkg::NF_W'(t8)), .nf_o(nf));
 
   // ---- Sequencer decisions on the registers as they stand ----
   logic in_limits, pix_inside, y_past_end;
@@ -250,8 +255,7 @@ module dda (
   end
 
   // ---- Output registers (fig. 4.17): OUT_LATENCY stages, frozen by a stall ----
-  localparam int PIX_W = 10 + 10 + 8 + 8 + 8 + 9 + 16;
-  logic [PIX_W-1:0] pipe_q[L];
+  logic [girtd_pkg::FIFO_W-1:0] pipe_q[L];
   logic valid_q[L];
   // A disabled tick freezes everything, like a stall, but is not counted as one.
   logic hold;
@@ -263,7 +267,7 @@ module dda (
       for (int i = 0; i < L; i++) valid_q[i] <= 1'b0;
     end else if (!hold) begin
       valid_q[0] <= emit;
-      pipe_q[0] <= {x[9:0], y[9:0], r8, g8, b8, nf, z16};
+      pipe_q[0] <= {x[SB-1:0], y[SB-1:0], r8, g8, b8, nf, z16};
       for (int i = 1; i < L; i++) begin
         valid_q[i] <= valid_q[i-1];
         pipe_q[i] <= pipe_q[i-1];
@@ -282,8 +286,8 @@ module dda (
   // Functional coverage (check build, verilator --coverage): every sequencer
   // state, both walk directions, and every row of the U decoder on an emitted
   // pixel. testbench/rtl reads coverage.dat and fails on a point never hit.
-  for (genvar st = 0; st <= 8; st++) begin : g_cover_state
-    cover property (@(posedge clk_i) state_q == 4'(st));
+  for (genvar st = 0; st <= int'(S_IDLE); st++) begin : g_cover_state
+    cover property (@(posedge clk_i) state_q == SW'(st));
   end
   cover property (@(posedge clk_i) state_q == S_WALK && !walk_left_q);
   cover property (@(posedge clk_i) state_q == S_WALK && walk_left_q);
@@ -294,5 +298,5 @@ module dda (
 
   // Unused by design: the colour, T and Z EPs' d/dx are only needed by DIR for D.
   logic unused;
-  assign unused = ^{r_dx_unused, g_dx_unused, b_dx_unused, t_dx_unused, z_dx_unused, x[XY_W-1:10], y[XY_W-1:10]};
+  assign unused = ^{r_dx_unused, g_dx_unused, b_dx_unused, t_dx_unused, z_dx_unused, x[XY_W-1:SB], y[XY_W-1:SB]};
 endmodule

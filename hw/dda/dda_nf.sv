@@ -1,23 +1,24 @@
 // Final transparency nf = n1 n2 n3 T (4.2.7). The U decoder routes a lone
 // non-1 operand straight through; with two or more it cuts each to 1.P and
 // multiplies pairwise through the PROM table, cutting each product back to
-// 1.P before the next. Operands and nf are 1.8 (256 = 1.0).
+// 1.P before the next. Operands and nf are 1.NORM_FRAC (1.8: 256 = 1.0).
 module dda_nf (
-    input  logic [8:0] n1_i,
-    input  logic [8:0] n2_i,
-    input  logic [8:0] n3_i,
-    input  logic [8:0] t_i,
-    output logic [8:0] nf_o
+    input  logic [girtd_pkg::NF_W-1:0] n1_i,
+    input  logic [girtd_pkg::NF_W-1:0] n2_i,
+    input  logic [girtd_pkg::NF_W-1:0] n3_i,
+    input  logic [girtd_pkg::NF_W-1:0] t_i,
+    output logic [girtd_pkg::NF_W-1:0] nf_o
 );
   localparam int P = girtd_pkg::PROM_FRAC;
-  localparam logic [8:0] ONE = 9'd256;
+  localparam int F = girtd_pkg::NORM_FRAC;  // the PROM's product is 0.F too
+  localparam logic [F:0] ONE = (F + 1)'(1) << F;
 
 `include "dda_prom_table.svh"
 
   logic [3:0] row;  // n1=1 n2=1 n3=1 T=1, as in the thesis' table
-  logic [8:0] operands[4];
+  logic [F:0] operands[4];
   logic [P-1:0] acc;
-  logic [7:0] product;
+  logic [F-1:0] product;
   logic first;
 
   assign row = {n1_i == ONE, n2_i == ONE, n3_i == ONE, t_i == ONE};
@@ -32,10 +33,10 @@ module dda_nf (
     first = 1'b1;
     for (int i = 0; i < 4; i++) begin
       if (operands[i] != ONE) begin
-        if (first) acc = operands[i][7:8-P];
+        if (first) acc = operands[i][F-1:F-P];
         else begin
-          product = prom_product(acc, operands[i][7:8-P]);
-          acc = product[7:8-P];
+          product = prom_product(acc, operands[i][F-1:F-P]);
+          acc = product[F-1:F-P];
         end
         first = 1'b0;
       end

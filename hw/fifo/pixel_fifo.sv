@@ -2,8 +2,8 @@
 // limit so depth sweeps do not re-verilate. Full/empty flags; pushing into a
 // full FIFO is an assertion failure.
 module pixel_fifo #(
-    parameter int W = 69,
-    parameter int DEPTH = 32,
+    parameter int W = girtd_pkg::FIFO_W,
+    parameter int DEPTH = girtd_pkg::FIFO_MAX_DEPTH,
     localparam int CW = $clog2(DEPTH + 1)
 ) (
     input  logic          clk_i,

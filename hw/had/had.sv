@@ -1,5 +1,5 @@
-// The HAD (4.2.11): takes pixels from the FIFO, keeps one 16-pixel page in
-// its cache, does the Z test and the blend, and swaps pages with the VRAM.
+// The HAD (4.2.11): takes pixels from the FIFO, keeps one page (16 x 1
+// pixels in the thesis; girtd_pkg::PAGE_*) in its cache, does the Z test and the blend, and swaps pages with the VRAM.
 // Rules as models/had (HadPix): Z >= Zb rejected; nf = 0 dropped; nf = 1
 // writes R, G, B and Z; 0 < nf < 1 blends R, G, B and keeps Z. Timing in
 // base ticks, all run-time inputs: a cache access (read, compare and write in
@@ -15,93 +15,120 @@
 module had (
     input  logic        clk_i,
     input  logic        rst_ni,
-    input  logic [15:0] access_ticks_i,
-    input  logic [15:0] blend_ticks_i,
+    input  logic [girtd_pkg::TIME_W-1:0] access_ticks_i,
+    input  logic [girtd_pkg::TIME_W-1:0] blend_ticks_i,
     input  logic        one_minus_exact_i,  // 1 - nf as 256 - nf (else the inverted bits, 255 - nf)
     input  logic        write_behind_i,
     input  logic        prefetch_i,
     input  logic        dirty_bits_i,
-    // FIFO side: {x10, y10, r8, g8, b8, nf9, z16}
+    // FIFO side: the word of girtd_pkg::FIFO_* {X, Y, R, G, B, nf, Z}
     input  logic        fifo_empty_i,
-    input  logic [68:0] fifo_data_i,
+    input  logic [girtd_pkg::FIFO_W-1:0] fifo_data_i,
     output logic        fifo_pop_o,
     // VRAM random port
     output logic        vram_req_o,
     output logic        vram_we_o,
-    output logic [15:0] vram_page_o,
-    output logic [16*40-1:0] vram_wdata_o,
-    input  logic [16*40-1:0] vram_rdata_i,
+    output logic [girtd_pkg::PAGE_NUMBER_W-1:0] vram_page_o,
+    output logic [girtd_pkg::PAGE_PIXELS*girtd_pkg::CELL_W-1:0] vram_wdata_o,
+    input  logic [girtd_pkg::PAGE_PIXELS*girtd_pkg::CELL_W-1:0] vram_rdata_i,
     input  logic        vram_busy_i,
     input  logic        vram_done_i,
     // Frame end: write the cache page back and forget it
     input  logic        flush_i,
     output logic        idle_o,
     // Pixel accounting and time (counters, reset with rst_ni)
-    output logic [31:0] written_o,
-    output logic [31:0] blended_o,
-    output logic [31:0] z_rejected_o,
-    output logic [31:0] dropped_o,
-    output logic [31:0] page_misses_o,
-    output logic [47:0] busy_ticks_o,       // a pixel in hand
-    output logic [47:0] vram_wait_ticks_o   // of those, waiting for a page
+    output logic [girtd_pkg::COUNT_W-1:0] written_o,
+    output logic [girtd_pkg::COUNT_W-1:0] blended_o,
+    output logic [girtd_pkg::COUNT_W-1:0] z_rejected_o,
+    output logic [girtd_pkg::COUNT_W-1:0] dropped_o,
+    output logic [girtd_pkg::COUNT_W-1:0] page_misses_o,
+    output logic [girtd_pkg::TICK_COUNT_W-1:0] busy_ticks_o,       // a pixel in hand
+    output logic [girtd_pkg::TICK_COUNT_W-1:0] vram_wait_ticks_o   // of those, waiting for a page
 );
   // Foreground states; background VRAM work (write-behind drain, prefetch)
   // runs while the HAD is in H_IDLE, H_ACCESS or H_BLEND.
+  localparam int SB = girtd_pkg::SCREEN_BITS, XB = girtd_pkg::PAGE_X_BITS, YB = girtd_pkg::PAGE_Y_BITS;
+  localparam int NW = girtd_pkg::PAGE_NUMBER_W, IW = girtd_pkg::PAGE_INDEX_W;
+  localparam int CW = girtd_pkg::CELL_W, PW = girtd_pkg::PAGE_PIXELS * girtd_pkg::CELL_W;
+  localparam int CO = girtd_pkg::COLOR_OUT, ZO = girtd_pkg::Z_OUT, NFW = girtd_pkg::NF_W;
+
+  // The page of a pixel, {Y[SB-1:YB], X[SB-1:XB]}, and its place in the page,
+  // {Y[YB-1:0], X[XB-1:0]} (models/config/rtl_layout.hpp, PageGeometry).
+  function automatic logic [NW-1:0] page_number(input logic [SB-1:0] x, input logic [SB-1:0] y);
+    page_number = NW'(((32'(y) >> YB) << (SB - XB)) | (32'(x) >> XB));
+  endfunction
+  function automatic logic [IW-1:0] page_index(input logic [SB-1:0] x, input logic [SB-1:0] y);
+    page_index = IW'(((32'(y) & ((1 << YB) - 1)) << XB) | (32'(x) & ((1 << XB) - 1)));
+  endfunction
+
   localparam logic [2:0] H_IDLE = 3'd0, H_WB = 3'd1, H_FETCH = 3'd2, H_ACCESS = 3'd3, H_BLEND = 3'd4,
                          H_FLUSH = 3'd5, H_REFETCH = 3'd6;  // REFETCH: the VRAM was taken between write-back and fetch
   logic [2:0] state_q;
-  logic [15:0] count_q;
-  logic [68:0] pix_q;
+  logic [girtd_pkg::TIME_W-1:0] count_q;
+  localparam logic [girtd_pkg::TIME_W-1:0] ONE_TICK = 1, TWO_TICKS = 2;
+  logic [girtd_pkg::FIFO_W-1:0] pix_q;
   logic flush_pending_q, dirty_q, use_pf_q;
   // Write-behind register: the old page waiting for its VRAM write.
   logic wb_pending_q;
-  logic [15:0] wb_page_q;
-  logic [16*40-1:0] wb_data_q;
+  logic [NW-1:0] wb_page_q;
+  logic [PW-1:0] wb_data_q;
   // Prefetch buffer.
   logic pf_valid_q, pf_loading_q;
-  logic [15:0] pf_page_q;
-  logic [16*40-1:0] pf_data_q;
+  logic [NW-1:0] pf_page_q;
+  logic [PW-1:0] pf_data_q;
 
   logic cache_valid, cache_load, cache_write, cache_invalidate;
-  logic [15:0] cache_page;
-  logic [16*40-1:0] cache_data, cache_load_data;
-  logic [39:0] cell_new, cell_old;
+  logic [NW-1:0] cache_page;
+  logic [PW-1:0] cache_data, cache_load_data;
+  logic [CW-1:0] cell_new, cell_old;
 
   // The pixel at the head of the FIFO and the one in hand.
-  logic [15:0] head_page, pix_page;  // A4-A19: Y and the top 6 bits of X
-  assign head_page = {fifo_data_i[58:49], fifo_data_i[68:63]};
-  assign pix_page = {pix_q[58:49], pix_q[68:63]};
-  logic [3:0] x;  // A0-A3: the pixel in the page
-  logic [7:0] r, g, b;
-  logic [8:0] nf;
-  logic [15:0] z, zb;
-  assign {x, r, g, b, nf, z} = {pix_q[62:59], pix_q[48:41], pix_q[40:33], pix_q[32:25], pix_q[24:16], pix_q[15:0]};
-  assign cell_old = cache_data[x*40+:40];
-  assign zb = cell_old[15:0];
+  logic [NW-1:0] head_page, pix_page;
+  logic [SB-1:0] head_x, head_y, pix_x, pix_y;
+  assign head_x = fifo_data_i[girtd_pkg::FIFO_X_LSB+:SB];
+  assign head_y = fifo_data_i[girtd_pkg::FIFO_Y_LSB+:SB];
+  assign pix_x = pix_q[girtd_pkg::FIFO_X_LSB+:SB];
+  assign pix_y = pix_q[girtd_pkg::FIFO_Y_LSB+:SB];
+  assign head_page = page_number(head_x, head_y);
+  assign pix_page = page_number(pix_x, pix_y);
+  logic [IW-1:0] x;  // the pixel in the page
+  logic [CO-1:0] r, g, b;
+  logic [NFW-1:0] nf;
+  logic [ZO-1:0] z, zb;
+  assign x = page_index(pix_x, pix_y);
+  assign r = pix_q[girtd_pkg::FIFO_R_LSB+:CO];
+  assign g = pix_q[girtd_pkg::FIFO_G_LSB+:CO];
+  assign b = pix_q[girtd_pkg::FIFO_B_LSB+:CO];
+  assign nf = pix_q[girtd_pkg::FIFO_NF_LSB+:NFW];
+  assign z = pix_q[girtd_pkg::FIFO_Z_LSB+:ZO];
+  assign cell_old = cache_data[32'(x)*CW+:CW];
+  assign zb = cell_old[ZO-1:0];
 
   pixel_cache u_cache (
       .clk_i, .rst_ni, .invalidate_i(cache_invalidate), .load_i(cache_load), .load_page_i(pix_page),
       .load_data_i(cache_load_data), .write_i(cache_write), .write_index_i(x), .write_data_i(cell_new),
       .valid_o(cache_valid), .page_o(cache_page), .data_o(cache_data));
 
-  // Cb = C nf + Cb (1 - nf), 8 x 8 products keeping the high byte.
-  function automatic logic [7:0] blend(input logic [7:0] c, input logic [7:0] cb, input logic [8:0] f,
-                                       input logic exact);
-    logic [8:0] one_minus;
-    logic [9:0] sum;
-    one_minus = exact ? 9'd256 - f : {1'b0, ~f[7:0]};
-    sum = 10'((17'(c) * 17'(f)) >> 8) + 10'((17'(cb) * 17'(one_minus)) >> 8);
-    blend = sum > 10'd255 ? 8'd255 : sum[7:0];
+  // Cb = C nf + Cb (1 - nf), CO x NF products keeping the high bits (8 x 8 in the thesis).
+  localparam int F = girtd_pkg::NORM_FRAC;
+  localparam logic [NFW-1:0] NF_ONE = NFW'(1) << F;
+  function automatic logic [CO-1:0] blend(input logic [CO-1:0] c, input logic [CO-1:0] cb, input logic [NFW-1:0] f,
+                                          input logic exact);
+    logic [NFW-1:0] one_minus;
+    logic [CO+1:0] sum;
+    one_minus = exact ? NF_ONE - f : {1'b0, ~f[F-1:0]};
+    sum = (CO + 2)'((32'(c) * 32'(f)) >> F) + (CO + 2)'((32'(cb) * 32'(one_minus)) >> F);
+    blend = sum > (CO + 2)'({CO{1'b1}}) ? '1 : sum[CO-1:0];
   endfunction
 
-  // The outcome of the access in hand.
+  // The outcome of the access in hand. A cell is {R, G, B, Z}.
   logic z_pass, opaque;
   assign z_pass = z < zb;
-  assign opaque = nf >= 9'd256;
+  assign opaque = nf >= NF_ONE;
   always_comb begin
     if (opaque) cell_new = {r, g, b, z};
-    else cell_new = {blend(r, cell_old[39:32], nf, one_minus_exact_i), blend(g, cell_old[31:24], nf, one_minus_exact_i),
-                     blend(b, cell_old[23:16], nf, one_minus_exact_i), cell_old[15:0]};
+    else cell_new = {blend(r, cell_old[ZO+2*CO+:CO], nf, one_minus_exact_i), blend(g, cell_old[ZO+CO+:CO], nf, one_minus_exact_i),
+                     blend(b, cell_old[ZO+:CO], nf, one_minus_exact_i), cell_old[ZO-1:0]};
   end
 
   // ---- Decisions of this tick ----
@@ -167,8 +194,8 @@ module had (
         vram_page_o = pix_page;
       end
       H_FETCH: cache_load = use_pf_q || vram_done_i;
-      H_ACCESS: cache_write = count_q == 16'd1 && z_pass && nf != '0 && (opaque || blend_ticks_i == 0);
-      H_BLEND: cache_write = count_q == 16'd1;
+      H_ACCESS: cache_write = count_q == ONE_TICK && z_pass && nf != '0 && (opaque || blend_ticks_i == 0);
+      H_BLEND: cache_write = count_q == ONE_TICK;
       H_FLUSH: cache_invalidate = vram_done_i || !must_write_back;
       default: ;
     endcase
@@ -210,7 +237,7 @@ module had (
           if (fifo_pop_o) pix_q <= fifo_data_i;
           if (fifo_pop_o && head_hit) begin
             state_q <= H_ACCESS;  // the pop tick is the access's first
-            count_q <= access_ticks_i <= 16'd2 ? 16'd1 : access_ticks_i - 1'b1;
+            count_q <= access_ticks_i <= TWO_TICKS ? ONE_TICK : access_ticks_i - 1'b1;
           end else if (miss_go) begin
             page_misses_o <= page_misses_o + 1'b1;
             // The prefetched page is used if it is the one wanted, else dropped.
@@ -237,10 +264,10 @@ module had (
         H_FETCH: if (use_pf_q || vram_done_i) begin
           state_q <= H_ACCESS;
           use_pf_q <= 1'b0;
-          count_q <= access_ticks_i == 0 ? 16'd1 : access_ticks_i;
+          count_q <= access_ticks_i == 0 ? ONE_TICK : access_ticks_i;
         end
         H_ACCESS: begin
-          if (count_q > 16'd1) count_q <= count_q - 1'b1;
+          if (count_q > ONE_TICK) count_q <= count_q - 1'b1;
           else if (!z_pass) begin
             z_rejected_o <= z_rejected_o + 1'b1;
             state_q <= H_IDLE;
@@ -260,7 +287,7 @@ module had (
           end
         end
         H_BLEND: begin
-          if (count_q > 16'd1) count_q <= count_q - 1'b1;
+          if (count_q > ONE_TICK) count_q <= count_q - 1'b1;
           else state_q <= H_IDLE;
         end
         H_FLUSH: if (vram_done_i || !must_write_back) begin

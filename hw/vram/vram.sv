@@ -1,40 +1,48 @@
 // Video memory (4.2.11.4, 5.2.2): 1M x 64 bits = two RGB buffers and one Z
-// per pixel, on 16 boards (banks = X[3:0]), so one random-port cycle moves a
-// whole 16-pixel page. Behavioural: the array is read and written at the end
+// per pixel, on PAGE_PIXELS boards (16 in the thesis: banks = X[3:0]), so one
+// random-port cycle moves a whole page. A pixel's word address is {page
+// number, pixel in the page} (girtd_pkg::PAGE_*). Behavioural: the array is read and written at the end
 // of a cycle of `cycle_ticks_i`; the frame clear goes through the serial port
 // and takes `clear_ticks_i`. The array is public for the testbench backdoor
 // and kept out of waveforms.
-// Word: [63:40] RGB buffer 0, [39:16] RGB buffer 1, [15:0] Z.
-module vram (
+// Word: RGB buffer 0, RGB buffer 1, Z (girtd_pkg::VRAM_*).
+module vram #(
+    localparam int PW = girtd_pkg::PAGE_PIXELS * girtd_pkg::CELL_W,
+    localparam int RGB = 3 * girtd_pkg::COLOR_OUT
+) (
     input  logic            clk_i,
     input  logic            rst_ni,
-    input  logic [15:0]     cycle_ticks_i,
-    input  logic [23:0]     clear_ticks_i,
+    input  logic [girtd_pkg::TIME_W-1:0]      cycle_ticks_i,
+    input  logic [girtd_pkg::LONG_TIME_W-1:0] clear_ticks_i,
     // Refresh and video scan-out (option): every steal_period_ticks_i ticks
     // (0 = never) one random-port cycle is taken for a serial transfer.
-    input  logic [23:0]     steal_period_ticks_i,
+    input  logic [girtd_pkg::LONG_TIME_W-1:0] steal_period_ticks_i,
     // Random port: one page per request
     input  logic            req_i,
     input  logic            we_i,
-    input  logic [15:0]     page_i,
-    input  logic [16*40-1:0] wdata_i,  // per pixel {back R, G, B, Z}
-    output logic [16*40-1:0] rdata_o,
+    input  logic [girtd_pkg::PAGE_NUMBER_W-1:0] page_i,
+    input  logic [PW-1:0]   wdata_i,  // per pixel {back R, G, B, Z}
+    output logic [PW-1:0]   rdata_o,
     output logic            busy_o,   // no request can be taken this tick
     output logic            done_o,   // the tick a page operation ends (a fetch's data is valid)
     // Frame control
     input  logic            clear_i,  // back buffer <- background, Z <- FFFF
-    input  logic [23:0]     background_i,
+    input  logic [RGB-1:0]  background_i,
     input  logic            swap_i,
     output logic            front_o   // the buffer shown: 0 = bits 63:40
 );
-  logic [63:0] mem[1 << 20]  /*verilator public*/;
-  logic [23:0] left_q;  // ticks left in the current operation
+  localparam int LT = girtd_pkg::LONG_TIME_W, N = girtd_pkg::PAGE_PIXELS, CW = girtd_pkg::CELL_W;
+  localparam int IW = girtd_pkg::PAGE_INDEX_W, ZO = girtd_pkg::Z_OUT;
+  localparam int B0 = girtd_pkg::VRAM_RGB0_LSB, B1 = girtd_pkg::VRAM_RGB1_LSB, ZL = girtd_pkg::VRAM_Z_LSB;
+  localparam logic [ZO-1:0] Z_CLEAR = ZO'(girtd_pkg::Z_CLEAR);
+  logic [girtd_pkg::VRAM_W-1:0] mem[1 << (2 * girtd_pkg::SCREEN_BITS)]  /*verilator public*/;
+  logic [LT-1:0] left_q;  // ticks left in the current operation
   logic busy_q, we_q, front_q, clearing_q, stealing_q;
-  logic [15:0] page_q;
-  logic [16*40-1:0] wdata_q;
-  logic [23:0] bg_q;
+  logic [girtd_pkg::PAGE_NUMBER_W-1:0] page_q;
+  logic [PW-1:0] wdata_q;
+  logic [RGB-1:0] bg_q;
   logic finishing;
-  logic [23:0] steal_count_q;
+  logic [LT-1:0] steal_count_q;
   logic [7:0] steals_owed_q;  // stolen cycles come due even while the port is busy
   logic steal_due_q;
   logic buf_q;  // the back buffer of the operation in flight, fixed when it is accepted
@@ -43,7 +51,7 @@ module vram (
   // An operation ends on the tick its count reaches 1; a new one can be
   // accepted on that same tick, so back-to-back cycles leave no gap.
   logic port_busy, clear_pending_q;
-  assign finishing = busy_q && left_q == 24'd1;
+  assign finishing = busy_q && left_q == LT'(1);
   assign port_busy = busy_q && !finishing;
   // A due stolen cycle or a pending clear goes before any request.
   assign busy_o = port_busy || steal_due_q || clear_pending_q || clear_i;
@@ -79,7 +87,7 @@ module vram (
       if (!port_busy && steal_due_q) begin  // a stolen cycle goes first and moves no pixel data
         busy_q <= 1'b1;
         we_q <= 1'b0;
-        left_q <= cycle_ticks_i == 0 ? 24'd1 : {8'd0, cycle_ticks_i};
+        left_q <= cycle_ticks_i == 0 ? LT'(1) : LT'(cycle_ticks_i);
         stealing_q <= 1'b1;
       end else if (!port_busy && (clear_pending_q || clear_i)) begin
         clear_pending_q <= 1'b0;
@@ -87,14 +95,14 @@ module vram (
         clearing_q <= 1'b1;
         buf_q <= !front_q;
         bg_q <= background_i;
-        left_q <= clear_ticks_i == 0 ? 24'd1 : clear_ticks_i;
+        left_q <= clear_ticks_i == 0 ? LT'(1) : clear_ticks_i;
       end else if (!port_busy && req_i) begin
         busy_q <= 1'b1;
         buf_q <= !front_q;
         we_q <= we_i;
         page_q <= page_i;
         wdata_q <= wdata_i;
-        left_q <= cycle_ticks_i == 0 ? 24'd1 : {8'd0, cycle_ticks_i};
+        left_q <= cycle_ticks_i == 0 ? LT'(1) : LT'(cycle_ticks_i);
       end
     end
   end
@@ -106,12 +114,16 @@ module vram (
   always_ff @(posedge clk_i) begin
     if (rst_ni && finishing && !stealing_q) begin
       if (clearing_q) begin
-        for (int a = 0; a < (1 << 20); a++)
-          mem[a] = !buf_q ? {bg_q, mem[a][39:16], 16'hFFFF} : {mem[a][63:40], bg_q, 16'hFFFF};
+        for (int a = 0; a < (1 << (2 * girtd_pkg::SCREEN_BITS)); a++) begin
+          if (!buf_q) mem[a][B0+:RGB] = bg_q;
+          else mem[a][B1+:RGB] = bg_q;
+          mem[a][ZL+:ZO] = Z_CLEAR;
+        end
       end else if (we_q) begin
-        for (int i = 0; i < 16; i++) begin
-          if (!buf_q) mem[{page_q, 4'(i)}] = {wdata_q[i*40+16+:24], mem[{page_q, 4'(i)}][39:16], wdata_q[i*40+:16]};
-          else mem[{page_q, 4'(i)}] = {mem[{page_q, 4'(i)}][63:40], wdata_q[i*40+16+:24], wdata_q[i*40+:16]};
+        for (int i = 0; i < N; i++) begin
+          if (!buf_q) mem[{page_q, IW'(i)}][B0+:RGB] = wdata_q[i*CW+ZO+:RGB];
+          else mem[{page_q, IW'(i)}][B1+:RGB] = wdata_q[i*CW+ZO+:RGB];
+          mem[{page_q, IW'(i)}][ZL+:ZO] = wdata_q[i*CW+:ZO];
         end
       end
     end
@@ -119,9 +131,9 @@ module vram (
   /* verilator lint_on BLKSEQ */
 
   // Read data of the page being fetched: the back buffer and Z.
-  for (genvar i = 0; i < 16; i++) begin : g_read
-    logic [63:0] word;
-    assign word = mem[{page_q, 4'(i)}];
-    assign rdata_o[i*40+:40] = !buf_q ? {word[63:40], word[15:0]} : {word[39:16], word[15:0]};
+  for (genvar i = 0; i < N; i++) begin : g_read
+    logic [girtd_pkg::VRAM_W-1:0] word;
+    assign word = mem[{page_q, IW'(i)}];
+    assign rdata_o[i*CW+:CW] = !buf_q ? {word[B0+:RGB], word[ZL+:ZO]} : {word[B1+:RGB], word[ZL+:ZO]};
   end
 endmodule

@@ -5,6 +5,7 @@
 
 #include "common/input_error.hpp"
 #include "config/config_layers.hpp"
+#include "config/rtl_layout.hpp"
 
 namespace girtd {
 namespace {
@@ -84,7 +85,7 @@ Params build(const ConfigLayers& layers) {
 
     p.base_tick_ns = r.real("timing.base_tick_ns");
     if (!(p.base_tick_ns > 0)) r.fail("timing.base_tick_ns", "must be positive");
-    p.dda_clock_ns = period(r, "dda.clock_ns", p.base_tick_ns, false, 255);
+    p.dda_clock_ns = period(r, "dda.clock_ns", p.base_tick_ns, false, max_of_bits(kRtlDdaPeriodBits));
     p.xy_compare_pipelined = r.flag("dda.xy_compare_pipelined");
     p.walk_fix = r.flag("dda.walk_fix");
     p.output_latency_clocks = r.integer("dda.output_latency_clocks", 1, 8);
@@ -93,18 +94,28 @@ Params build(const ConfigLayers& layers) {
     if (omn == "exact") p.one_minus_nf = OneMinusNf::kExact;
     else if (omn == "invert_bits") p.one_minus_nf = OneMinusNf::kInvertBits;
     else r.fail("had.one_minus_nf", "must be \"exact\" or \"invert_bits\"");
-    p.had_access_ns = period(r, "had.access_ns", p.base_tick_ns, false, 65535);
-    p.had_blend_extra_ns = period(r, "had.blend_extra_ns", p.base_tick_ns, true, 65535);
+    p.had_access_ns = period(r, "had.access_ns", p.base_tick_ns, false, max_of_bits(kRtlTimeBits));
+    p.had_blend_extra_ns = period(r, "had.blend_extra_ns", p.base_tick_ns, true, max_of_bits(kRtlTimeBits));
     p.had_write_behind = r.flag("had.write_behind");
     p.had_prefetch = r.flag("had.prefetch");
     p.had_dirty_bits = r.flag("had.dirty_bits");
+    p.cache_page_width = r.integer("cache.page_width", 1, 1024);
+    p.cache_page_height = r.integer("cache.page_height", 1, 1024);
+    for (const char* key : {"cache.page_width", "cache.page_height"}) {
+      const int v = r.integer(key, 1, 1024);
+      if ((v & (v - 1)) != 0) r.fail(key, "must be a power of two (the page is a field of the pixel address)");
+    }
+    if (p.cache_page_width * p.cache_page_height > 64 || p.cache_page_width * p.cache_page_height < 2)
+      r.fail("cache.page_height", "a page holds 2 to 64 pixels (page_width x page_height)");
 
-    p.vram_cycle_ns = period(r, "vram.cycle_ns", p.base_tick_ns, false, 65535);
-    p.vram_serial_ns = period(r, "vram.serial_ns", p.base_tick_ns, true, 65535);
-    p.vram_serial_transfers = r.integer("vram.serial_transfers", 0, 16777215);
-    if (uint64_t(p.vram_serial_transfers) * uint64_t(p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)) > 16777215)
-      r.fail("vram.serial_transfers", "the frame clear (serial_transfers x (serial_ns + cycle_ns)) must be below 2^24 ticks");
-    p.vram_steal_every_ns = period(r, "vram.steal_every_ns", p.base_tick_ns, true, 16777215);
+    p.vram_cycle_ns = period(r, "vram.cycle_ns", p.base_tick_ns, false, max_of_bits(kRtlTimeBits));
+    p.vram_serial_ns = period(r, "vram.serial_ns", p.base_tick_ns, true, max_of_bits(kRtlTimeBits));
+    const int64_t long_max = max_of_bits(kRtlLongTimeBits);
+    p.vram_serial_transfers = r.integer("vram.serial_transfers", 0, static_cast<int>(long_max));
+    if (int64_t(p.vram_serial_transfers) * (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)) > long_max)
+      r.fail("vram.serial_transfers", "the frame clear (serial_transfers x (serial_ns + cycle_ns)) must be at most " +
+                                          std::to_string(long_max) + " base ticks (the RTL's port)");
+    p.vram_steal_every_ns = period(r, "vram.steal_every_ns", p.base_tick_ns, true, long_max);
     if (p.vram_steal_every_ns > 0 && p.vram_steal_every_ns < 2 * p.vram_cycle_ns)
       r.fail("vram.steal_every_ns", "must be 0 (off) or at least two VRAM cycles");
 

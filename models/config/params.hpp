@@ -48,6 +48,8 @@ struct Params {
   bool had_write_behind;      // 5.2.2 improvements, off in the thesis' design
   bool had_prefetch;
   bool had_dirty_bits;        // skip writing back a page no pixel was written to
+  int cache_page_width;       // a cache page (one VRAM cycle): pixels in X ...
+  int cache_page_height;      // ... and in Y (16 x 1 in the thesis)
   double vram_cycle_ns;
   double vram_serial_ns;      // serial-port transfer, used by the frame clear (§7)
   int vram_serial_transfers;

@@ -12,7 +12,8 @@ BackendTimingModel::BackendTimingModel(const Params& p)
       blend_(p.ticks(p.had_blend_extra_ns)),
       vram_(p.ticks(p.vram_cycle_ns)),
       limit_(p.fifo_dda_had_depth),
-      clear_ticks_(uint64_t(p.vram_serial_transfers) * (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns))) {
+      clear_ticks_(uint64_t(p.vram_serial_transfers) * (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns))),
+      page_(rtl_layout(p).page) {
   if (p.had_write_behind || p.had_prefetch || p.had_dirty_bits || p.vram_steal_every_ns > 0)
     throw InputError("--config", 0,
                      "the back-end timing model covers the design as written: turn off had.write_behind, "
@@ -51,7 +52,7 @@ void BackendTimingModel::push(const TimedPixel& p, uint64_t tick) {
   pushes_.push_back(tick);
   const uint64_t pop = std::max(tick + 1, had_free_);
   pops_.push_back(pop);
-  const int page = (p.y << 6) | (p.x >> 4);
+  const int page = static_cast<int>(page_.number_of(p.x, p.y));
   uint64_t done;
   if (cache_valid_ && page == cache_page_) {
     done = pop + std::max(access_, 2);

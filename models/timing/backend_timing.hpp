@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "config/params.hpp"
+#include "config/rtl_layout.hpp"
 #include "had/had.hpp"
 
 namespace girtd {
@@ -70,6 +71,7 @@ class BackendTimingModel {
 
   int period_, access_, blend_, vram_, limit_;
   uint64_t clear_ticks_;
+  PageGeometry page_;      // which pixels share a cache page
   uint64_t dda_at_ = 0;    // the DDA's next enabled tick
   uint64_t had_free_ = 0;  // the HAD's next IDLE tick
   bool cache_valid_ = false;

@@ -12,6 +12,7 @@
 
 #include "common/types.hpp"
 #include "config/params.hpp"
+#include "dda/dda_engine.hpp"
 #include "dda/dda_params.hpp"
 
 class VerilatedFstC;
@@ -27,7 +28,7 @@ struct BackendCounters {
   uint64_t page_misses = 0;
   uint64_t had_busy_ticks = 0, had_vram_wait_ticks = 0;
   int fifo_max = 0;
-  std::array<uint64_t, 8> dda_state_clocks{};  // DDA clocks per state (models/dda numbering)
+  std::array<uint64_t, static_cast<size_t>(DdaState::kCount)> dda_state_clocks{};  // DDA clocks per state (models/dda numbering)
   uint64_t accounted() const { return written + blended + z_rejected + dropped; }
 };
 

@@ -12,8 +12,8 @@
 #include <utility>
 
 #include "common/input_error.hpp"
-#include "girtd/built_rtl.hpp"
 #include "rtl/backend_rtl.hpp"
+#include "config/rtl_layout.hpp"
 #include "rtl/port_access.hpp"
 #include "verilated.h"
 
@@ -49,29 +49,26 @@ struct HasFstTrace<M, std::void_t<decltype(std::declval<M&>().trace(std::declval
 template <typename Model>
 class BackendRtlCore final : public BackendRtlDriver {
  public:
-  BackendRtlCore(const Params& p, uint32_t x_seed) : params_(p) {
+  BackendRtlCore(const Params& p, uint32_t x_seed) : params_(p), layout_(rtl_layout(p)) {
     if (x_seed != 0) {
       ctx_.randReset(2);
       ctx_.randSeed(static_cast<int>(x_seed));
     }
     if constexpr (HasFstTrace<Model>::value) ctx_.traceEverOn(true);
     top_ = std::make_unique<Model>(&ctx_, "TOP");
-    // Values fixed when the RTL was verilated (build/generated/hw/girtd_pkg.sv).
-    if (p.fifo_max_depth != kBuiltFifoDepth || p.fifo_dda_had_depth > kBuiltFifoDepth)
-      throw InputError("--config", 0, "fifo.max_depth / dda_had_depth: the RTL FIFO is built " +
-                                          std::to_string(kBuiltFifoDepth) + " deep (change config/girtd.json and rebuild)");
-    require_built_output_latency(p);
+    require_rtl_build(p);  // values fixed when the RTL was verilated
     Model& t = *top_;
-    t.dda_period_ticks_i = static_cast<uint8_t>(p.ticks(p.dda_clock_ns));
-    t.had_access_ticks_i = static_cast<uint16_t>(p.ticks(p.had_access_ns));
-    t.had_blend_ticks_i = static_cast<uint16_t>(p.ticks(p.had_blend_extra_ns));
-    t.vram_cycle_ticks_i = static_cast<uint16_t>(p.ticks(p.vram_cycle_ns));
-    t.clear_ticks_i =
-        static_cast<uint32_t>(p.vram_serial_transfers * (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)));
-    t.vram_steal_period_ticks_i = static_cast<uint32_t>(p.ticks(p.vram_steal_every_ns));
+    // Run-time inputs; params.cpp holds each to its port's width.
+    set_port(t.dda_period_ticks_i, p.ticks(p.dda_clock_ns), kRtlDdaPeriodBits);
+    set_port(t.had_access_ticks_i, p.ticks(p.had_access_ns), kRtlTimeBits);
+    set_port(t.had_blend_ticks_i, p.ticks(p.had_blend_extra_ns), kRtlTimeBits);
+    set_port(t.vram_cycle_ticks_i, p.ticks(p.vram_cycle_ns), kRtlTimeBits);
+    set_port(t.clear_ticks_i, int64_t(p.vram_serial_transfers) * (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)),
+             kRtlLongTimeBits);
+    set_port(t.vram_steal_period_ticks_i, p.ticks(p.vram_steal_every_ns), kRtlLongTimeBits);
     period_ = static_cast<uint64_t>(p.ticks(p.dda_clock_ns));
     steal_period_ = static_cast<uint64_t>(p.ticks(p.vram_steal_every_ns));
-    t.fifo_limit_i = static_cast<uint8_t>(p.fifo_dda_had_depth);
+    set_port(t.fifo_limit_i, p.fifo_dda_had_depth, layout_.fifo_count_bits);
     t.write_behind_i = p.had_write_behind;
     t.prefetch_i = p.had_prefetch;
     t.dirty_bits_i = p.had_dirty_bits;
@@ -91,7 +88,8 @@ class BackendRtlCore final : public BackendRtlDriver {
   void begin_frame(Rgb bg) override {
     Model& t = *top_;
     drain();
-    t.background_i = (uint32_t(bg.r) << 16) | (uint32_t(bg.g) << 8) | bg.b;
+    const int c = params_.ep_color.out_bits;
+    set_port(t.background_i, (int64_t(bg.r) << (2 * c)) | (int64_t(bg.g) << c) | bg.b, 3 * c);
     t.clear_i = 1;
     tick();
     t.clear_i = 0;
@@ -178,24 +176,29 @@ class BackendRtlCore final : public BackendRtlDriver {
     return c;
   }
 
+  // The VRAM read through the backdoor, pixel by pixel (row-major), each at
+  // its word address {page number, pixel in the page}.
   std::vector<uint8_t> shown_rgb() const override {
     const auto& mem = vram();
-    const bool front = top_->front_o;  // 0: bits 63:40 are shown
-    std::vector<uint8_t> out((size_t{1} << 20) * 3);
-    for (size_t a = 0; a < (size_t{1} << 20); ++a) {
-      const uint64_t w = mem[a];
-      const uint32_t rgb = static_cast<uint32_t>((front ? (w >> 16) : (w >> 40)) & 0xFFFFFF);
-      out[3 * a] = static_cast<uint8_t>(rgb >> 16);
-      out[3 * a + 1] = static_cast<uint8_t>(rgb >> 8);
-      out[3 * a + 2] = static_cast<uint8_t>(rgb);
-    }
+    const BitField shown = top_->front_o ? layout_.vram.rgb1 : layout_.vram.rgb0;
+    const int c = params_.ep_color.out_bits;
+    std::vector<uint8_t> out(size_t(params_.screen_width) * size_t(params_.screen_height) * 3);
+    size_t o = 0;
+    for (int y = 0; y < params_.screen_height; ++y)
+      for (int x = 0; x < params_.screen_width; ++x) {
+        const uint64_t rgb = bits(mem[layout_.page.vram_address(x, y)], shown);
+        for (int k = 2; k >= 0; --k) out[o++] = static_cast<uint8_t>(rgb >> (k * c));
+      }
     return out;
   }
 
   std::vector<uint16_t> z_plane() const override {
     const auto& mem = vram();
-    std::vector<uint16_t> out(size_t{1} << 20);
-    for (size_t a = 0; a < out.size(); ++a) out[a] = static_cast<uint16_t>(mem[a] & 0xFFFF);
+    std::vector<uint16_t> out(size_t(params_.screen_width) * size_t(params_.screen_height));
+    size_t o = 0;
+    for (int y = 0; y < params_.screen_height; ++y)
+      for (int x = 0; x < params_.screen_width; ++x)
+        out[o++] = static_cast<uint16_t>(bits(mem[layout_.page.vram_address(x, y)], layout_.vram.z));
     return out;
   }
 
@@ -223,7 +226,7 @@ class BackendRtlCore final : public BackendRtlDriver {
     Model& t = *top_;
     t.clk_i = 0;
     t.eval();
-    if (t.dda_active_o) ++state_clocks_[t.dda_state_o & 7];
+    if (t.dda_active_o && t.dda_state_o < state_clocks_.size()) ++state_clocks_[t.dda_state_o];
     BackendRtl::TickProbe probe{};
     if (on_tick_) {
       probe = {ticks_ + 1, false, bool(t.pixel_push_o), int(t.pixel_x_o), int(t.pixel_y_o)};
@@ -238,13 +241,15 @@ class BackendRtlCore final : public BackendRtlDriver {
     }
   }
   const auto& vram() const { return top_->rootp->vlSymsp->TOP__girtd_backend__u_vram.mem; }
+  static uint64_t bits(uint64_t word, const BitField& f) { return (word >> f.lsb) & uint64_t(max_of_bits(f.width)); }
 
   const Params& params_;
+  const RtlLayout layout_;
   VerilatedContext ctx_;
   std::unique_ptr<Model> top_;
   uint64_t ticks_ = 0;
   uint64_t period_ = 1, steal_period_ = 0;  // DDA clock and VRAM steal period, in ticks
-  std::array<uint64_t, 8> state_clocks_{};
+  std::array<uint64_t, static_cast<size_t>(DdaState::kCount)> state_clocks_{};
   std::function<void(const BackendRtl::TickProbe&)> on_tick_;
 };
 

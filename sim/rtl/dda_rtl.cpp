@@ -45,7 +45,7 @@ struct DdaRtl::Impl {
 };
 
 DdaRtl::DdaRtl(const Params& p, uint32_t x_seed) : impl_(std::make_unique<Impl>(p, x_seed)) {
-  require_built_output_latency(p);
+  require_rtl_build(p);
 }
 DdaRtl::~DdaRtl() { impl_->top->final(); }
 

@@ -10,16 +10,19 @@
 #include "common/triangle_setup.hpp"
 #include "config/params.hpp"
 #include "dda/dda_params.hpp"
-#include "girtd/built_rtl.hpp"
+#include "config/rtl_package.hpp"
+#include "rtl_build.hpp"
 
 namespace girtd {
 
-// The DDA's output registers are an elaboration value of the RTL: a
-// configuration asking for another depth needs a rebuild.
-inline void require_built_output_latency(const Params& p) {
-  if (p.output_latency_clocks != kBuiltOutputLatency)
-    throw InputError("--config", 0, "dda.output_latency_clocks: the RTL is built with " +
-                                        std::to_string(kBuiltOutputLatency) + " (change config/girtd.json and rebuild)");
+// Widths, layouts and depths are elaboration values of the Verilated RTL
+// (rtl_build.hpp, models/config/rtl_package.hpp): a configuration that asks
+// for others needs another build (an RTL variant), never a silently wrong run.
+inline void require_rtl_build(const Params& p) {
+  if (rtl_build_key(p) == kRtlBuildKey) return;
+  throw InputError("--config", 0,
+                   "this RTL build (" + std::string(kRtlBuildKey) + ") is elaborated for other values: " +
+                       rtl_build_differences(nlohmann::json::parse(kRtlBuildValues), rtl_build_values(p)));
 }
 
 template <typename Port>

@@ -37,7 +37,7 @@ TEST_CASE("json_key_lines gives each key's line by dotted path", "[params]") {
   CHECK(lines.size() == 6);
 }
 
-TEST_CASE("--config files merge in order and the later wins", "[params]") {
+TEST_CASE("configuration files merge in order and the later wins", "[params]") {
   const std::string a = temp_file("cfg_a.json", "{ \"fifo\": { \"dda_had_depth\": 8 }, \"had\": { \"access_ns\": 30 } }");
   const std::string b = temp_file("cfg_b.json", "{ \"fifo\": { \"dda_had_depth\": 4 } }");
   const Params ab = Params::from_files({a, b});
