@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
+#include "rtl/rtl_variants.hpp"
 
 namespace {
 constexpr const char* kConfigHelp =
@@ -67,6 +68,11 @@ int main(int argc, char** argv) {
   }
 
   try {
+    // A configuration the built RTL is not elaborated for runs in an RTL
+    // variant (render on rtl; regress, bench and claims drive the RTL too).
+    const bool drives_rtl = (*render && ra.backend == "rtl") || *regress || *bench || *claims;
+    const ConfigFiles& config = *render ? ra.config : *regress ? rg.config : *bench ? bench_config : claims_config;
+    if (drives_rtl) run_in_rtl_variant_if_needed(load_params(config), argv);
     if (*render) return run_render(ra);
     if (*claims) return run_claims(claims_config);
     if (*bench) return run_bench(bench_config, bench_out, bench_pipeline);

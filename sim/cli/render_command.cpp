@@ -9,6 +9,7 @@
 #include "pipeline/pipeline.hpp"
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
+#include "rtl/rtl_build_info.hpp"
 #include "cli/output_set.hpp"
 #include "common/input_error.hpp"
 #include "common/triangle_setup.hpp"
@@ -164,6 +165,7 @@ int run_render(const RenderArgs& a) {
   ctx.not_modeled = pipelined ? std::vector<std::string>{} : backend->not_modeled();
   ctx.image_sha256 = sha256_hex(out.shown.rgb);
   ctx.warnings = warnings;
+  if (ctx.backend == "rtl") ctx.rtl_build = built_rtl_key();
   const nlohmann::json report = make_report(ctx, out.stats, params);
 
   OutputSet files(dir);

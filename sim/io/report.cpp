@@ -128,6 +128,7 @@ json make_report(const ReportContext& ctx, const RunStats& s, const Params& para
   r["not_modeled"] = ctx.not_modeled;
   r["warnings"] = ctx.warnings;
   r["config"] = params.source;
+  r["rtl_build"] = ctx.rtl_build.empty() ? nlohmann::json() : nlohmann::json(ctx.rtl_build);
   return r;
 }
 

@@ -18,6 +18,7 @@ struct ReportContext {
   std::vector<std::string> not_modeled;
   std::string image_sha256;
   std::vector<std::string> warnings;  // input the run went on from ("FILE: what")
+  std::string rtl_build;              // the rtl back end's RTL build key; "" for the others
 };
 
 nlohmann::json make_report(const ReportContext& ctx, const RunStats& s, const Params& params);

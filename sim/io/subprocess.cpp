@@ -9,7 +9,9 @@
 
 namespace girtd {
 
-int run_process(const std::vector<std::string>& args, bool quiet) {
+int run_process(const std::vector<std::string>& args, bool quiet) { return run_process_logged(args, quiet ? "/dev/null" : ""); }
+
+int run_process_logged(const std::vector<std::string>& args, const std::string& log_path) {
   std::vector<std::string> copy = args;
   std::vector<char*> argv;
   for (std::string& a : copy) argv.push_back(a.data());
@@ -19,11 +21,11 @@ int run_process(const std::vector<std::string>& args, bool quiet) {
   const pid_t pid = fork();
   if (pid < 0) return -1;
   if (pid == 0) {
-    if (quiet) {
-      const int null = ::open("/dev/null", O_WRONLY);
-      if (null >= 0) {
-        dup2(null, 1);
-        dup2(null, 2);
+    if (!log_path.empty()) {
+      const int log = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+      if (log >= 0) {
+        dup2(log, 1);
+        dup2(log, 2);
       }
     }
     execvp(argv[0], argv.data());

@@ -10,6 +10,8 @@ namespace girtd {
 // could not be started or did not exit normally. `quiet` sends its stdout
 // and stderr to /dev/null.
 int run_process(const std::vector<std::string>& argv, bool quiet);
+// The same with its stdout and stderr appended to `log_path` ("" keeps ours).
+int run_process_logged(const std::vector<std::string>& argv, const std::string& log_path);
 
 // This program's own path (/proc/self/exe), to run a subcommand in a child
 // process: SystemC elaborates once per process.

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# RTL variants on demand (sim/rtl/rtl_variants.hpp): a configuration whose
+# widths, layouts or depths the built RTL lacks runs in an RTL variant built
+# for it. For each CONFIG, INPUT renders on golden, approx and rtl:
+# - one frame: golden's (the bit-exact model, which needs no build);
+# - approx and rtl: the same counts (pixels, DDA clocks and states, cache
+#   accesses and page misses, FIFO maximum), modeled time within 0.1 %;
+# - under a slow HAD (slow_had.json, merged after CONFIG) the DDA -> HAD FIFO
+#   fills to exactly its configured depth on approx and rtl;
+# - a second rtl run reuses the variant (no "building" line).
+# Prints one row per CONFIG.
+# Usage: test_rtl_variants.sh GIRTD_BINARY REPO_ROOT INPUT CONFIG...
+source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh" "$1" "$2"
+input=$3
+shift 3
+slow="testbench/variants/slow_had.json"
+fill_input="traces/sliver_fan.trace"
+counts='[.triangles_drawn, .pixels_generated, .pixels_written, .pixels_blended, .pixels_z_rejected,
+         .pixels_dropped, .dda_cycles, .dda_states, .cache, .stages.had.fifo_in_max]'
+
+printf '%-14s %-17s %-8s %-9s %-12s %-9s %-14s %-14s\n' config rtl_build built image page_misses fifo_max approx_time_s rtl_time_s
+for cfg in "$@"; do
+  name=$(basename "$cfg" .json)
+  mkdir -p "$TMP/$name"
+  for b in golden approx rtl; do
+    "$GIRTD" render "$input" --backend $b --config "$cfg" --out "$TMP/$name/$b" --quiet 2> "$TMP/$name/$b.err" \
+      && ok || bad "$name: $b render: $(cat "$TMP/$name/$b.err")"
+  done
+  build_line=$(grep -o "building an RTL variant.*in [^ ]*" "$TMP/$name/rtl.err" | head -1)
+  r="$TMP/$name/rtl/report.json" a="$TMP/$name/approx/report.json" g="$TMP/$name/golden/report.json"
+  [[ -s "$r" && -s "$a" && -s "$g" ]] || { bad "$name: a report is missing"; continue; }
+  sha=$(jq -r .image_sha256 "$g")
+  [[ "$(jq -r .image_sha256 "$r")" == "$sha" ]] && ok || bad "$name: rtl's frame differs from golden's"
+  [[ "$(jq -r .image_sha256 "$a")" == "$sha" ]] && ok || bad "$name: approx's frame differs from golden's"
+  [[ "$(jq -c "$counts" "$r")" == "$(jq -c "$counts" "$a")" ]] && ok \
+    || bad "$name: counts differ: rtl $(jq -c "$counts" "$r") approx $(jq -c "$counts" "$a")"
+  jq -e -n --slurpfile a "$a" --slurpfile r "$r" \
+    '(($a[0].modeled_time_s - $r[0].modeled_time_s) | fabs) <= 0.001 * $r[0].modeled_time_s' > /dev/null \
+    && ok || bad "$name: approx's modeled time $(jq .modeled_time_s "$a") vs rtl's $(jq .modeled_time_s "$r")"
+
+  # Reused: the second run builds nothing.
+  "$GIRTD" render "$input" --backend rtl --config "$cfg" --out "$TMP/$name/rtl2" --quiet 2> "$TMP/$name/rtl2.err" \
+    && ! grep -q "RTL variant" "$TMP/$name/rtl2.err" && ok || bad "$name: the variant was not reused: $(cat "$TMP/$name/rtl2.err")"
+
+  # The FIFO fills to its depth (and reports it: a 64-deep FIFO needs a 7-bit count).
+  depth=$(jq .config.fifo.dda_had_depth "$r")
+  for b in approx rtl; do
+    "$GIRTD" render "$fill_input" --backend $b --config "$cfg" --config "$slow" --out "$TMP/$name/fill_$b" --quiet \
+      && ok || bad "$name: $b fill run"
+    got=$(jq .stages.had.fifo_in_max "$TMP/$name/fill_$b/report.json" 2> /dev/null)
+    [[ "$got" == "$depth" ]] && ok || bad "$name: $b: the FIFO's maximum under a slow HAD is $got, its depth $depth"
+  done
+
+  printf '%-14s %-17s %-8s %-9s %-12s %-9s %-14s %-14s\n' "$name" "$(jq -r .rtl_build "$r")" \
+    "$([[ -n "$build_line" ]] && echo now || echo before)" "${sha:0:8}" "$(jq .cache.page_misses "$r")" \
+    "$(jq .stages.had.fifo_in_max "$r")" "$(jq .modeled_time_s "$a")" "$(jq .modeled_time_s "$r")"
+done
+finish
