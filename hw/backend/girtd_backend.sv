@@ -26,7 +26,7 @@ module girtd_backend (
     output logic                                 in_ready_o,
     input  logic [girtd_pkg::XY_W-1:0]           x0_i, y0_i, xmin_i, xmax_i, ymax_i,
     input  logic                                 q_zero_i,
-    input  logic signed [3:0]                    q_k_i,
+    input  logic signed [girtd_pkg::Q_K_W-1:0]   q_k_i,
     input  logic signed [girtd_pkg::COLOR_W-1:0] r_i, r_dx_i, r_dy_i, g_i, g_dx_i, g_dy_i, b_i, b_dx_i, b_dy_i,
     input  logic signed [girtd_pkg::T_W-1:0]     t_i, t_dx_i, t_dy_i,
     input  logic signed [girtd_pkg::Z_W-1:0]     z_i, z_dx_i, z_dy_i,

@@ -22,7 +22,7 @@ module dda (
     input  logic [girtd_pkg::XY_W-1:0]                   xmax_i,
     input  logic [girtd_pkg::XY_W-1:0]                   ymax_i,
     input  logic                                         q_zero_i,
-    input  logic signed [3:0]                            q_k_i,
+    input  logic signed [girtd_pkg::Q_K_W-1:0]          q_k_i,
     input  logic signed [girtd_pkg::COLOR_W-1:0]         r_i, r_dx_i, r_dy_i,
     input  logic signed [girtd_pkg::COLOR_W-1:0]         g_i, g_dx_i, g_dy_i,
     input  logic signed [girtd_pkg::COLOR_W-1:0]         b_i, b_dx_i, b_dy_i,
@@ -60,8 +60,8 @@ module dda (
   logic walk_left_q, walk_left_d, first_q, first_d;
   logic [XY_W-1:0] xmin_q, xmax_q, ymax_q;
   logic q_zero_q;
-  logic signed [3:0] q_k_q;
-  logic [2:0] op;
+  logic signed [girtd_pkg::Q_K_W-1:0] q_k_q;
+  logic [girtd_pkg::OP_W-1:0] op;
   logic emit, stall;
 
   // ---- Element processors ----
@@ -135,7 +135,7 @@ module dda (
     can_step = left ? xv > lo : xv < hi;
   endfunction
 
-  function automatic logic [2:0] step_op(input logic left);
+  function automatic logic [girtd_pkg::OP_W-1:0] step_op(input logic left);
     step_op = left ? girtd_pkg::OP_XDEC : girtd_pkg::OP_XINC;
   endfunction
 

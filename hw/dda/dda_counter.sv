@@ -1,13 +1,13 @@
 // The X or Y element processor: an up/down counter with its AUX register
 // (fig. 4.22). The limit compares live in the sequencer.
 module dda_counter #(
-    parameter int W = 16,
-    parameter logic [2:0] INC_OP = girtd_pkg::OP_XINC,
+    parameter int W = girtd_pkg::XY_W,
+    parameter logic [girtd_pkg::OP_W-1:0] INC_OP = girtd_pkg::OP_XINC,
     parameter bit CAN_DEC = 1'b1,  // Y only counts up (§4.2.2: never Y--)
-    parameter logic [2:0] DEC_OP = girtd_pkg::OP_XDEC
+    parameter logic [girtd_pkg::OP_W-1:0] DEC_OP = girtd_pkg::OP_XDEC
 ) (
     input  logic         clk_i,
-    input  logic [2:0]   op_i,
+    input  logic [girtd_pkg::OP_W-1:0] op_i,
     input  logic [W-1:0] value_i,
     output logic [W-1:0] value_o
 );

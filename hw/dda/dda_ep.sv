@@ -2,10 +2,10 @@
 // registers around one W-bit adder that wraps. Every EP performs the same
 // operation each clock.
 module dda_ep #(
-    parameter int W = 20
+    parameter int W = girtd_pkg::COLOR_W
 ) (
     input  logic                clk_i,
-    input  logic [2:0]          op_i,
+    input  logic [girtd_pkg::OP_W-1:0] op_i,
     input  logic signed [W-1:0] value_i,  // start value, taken on OP_LOAD
     input  logic signed [W-1:0] dx_i,
     input  logic signed [W-1:0] dy_i,

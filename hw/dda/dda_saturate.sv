@@ -2,9 +2,9 @@
 // FRAC fraction bits, saturated to 0 .. 2^OUT - 1 when guard bits exist
 // above the output, else its low OUT bits.
 module dda_saturate #(
-    parameter int W = 20,
-    parameter int FRAC = 9,
-    parameter int OUT = 8
+    parameter int W = girtd_pkg::COLOR_W,
+    parameter int FRAC = girtd_pkg::COLOR_FRAC,
+    parameter int OUT = girtd_pkg::COLOR_OUT
 ) (
     /* verilator lint_off UNUSEDSIGNAL */  // the fraction bits are truncated away
     input  logic signed [W-1:0] value_i,

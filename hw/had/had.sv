@@ -1,10 +1,11 @@
-// The HAD (4.2.11): takes pixels from the FIFO, keeps one page (16 x 1
-// pixels in the thesis; girtd_pkg::PAGE_*) in its cache, does the Z test and the blend, and swaps pages with the VRAM.
+// The HAD (4.2.11): takes pixels from the FIFO, keeps CACHE_PAGES pages (one
+// of 16 x 1 pixels in the thesis; girtd_pkg::PAGE_*) in its cache, does the Z test and the blend, and swaps pages with the VRAM.
 // Rules as models/had (HadPix): Z >= Zb rejected; nf = 0 dropped; nf = 1
 // writes R, G, B and Z; 0 < nf < 1 blends R, G, B and keeps Z. Timing in
 // base ticks, all run-time inputs: a cache access (read, compare and write in
 // one HAD cycle) takes `access_ticks_i`, a blend `blend_ticks_i` more; a page
-// miss writes the page back and fetches the new one (2 VRAM cycles).
+// miss writes back the page in the new one's cache slot and fetches the new
+// one (2 VRAM cycles); the frame's end writes back every page, slot by slot.
 // Options (5.2.2 and 7, all off in the thesis' design):
 // - write-behind: the old page goes to a register and is written while the
 //   new page is in use, so a miss waits for the fetch only;
@@ -67,7 +68,8 @@ module had (
   logic [girtd_pkg::TIME_W-1:0] count_q;
   localparam logic [girtd_pkg::TIME_W-1:0] ONE_TICK = 1, TWO_TICKS = 2;
   logic [girtd_pkg::FIFO_W-1:0] pix_q;
-  logic flush_pending_q, dirty_q, use_pf_q;
+  logic flush_pending_q, use_pf_q;
+  logic [girtd_pkg::CACHE_SLOT_W-1:0] flush_slot_q;  // the slot the frame-end flush is at
   // Write-behind register: the old page waiting for its VRAM write.
   logic wb_pending_q;
   logic [NW-1:0] wb_page_q;
@@ -77,9 +79,10 @@ module had (
   logic [NW-1:0] pf_page_q;
   logic [PW-1:0] pf_data_q;
 
-  logic cache_valid, cache_load, cache_write, cache_invalidate;
-  logic [NW-1:0] cache_page;
-  logic [PW-1:0] cache_data, cache_load_data;
+  logic cache_load, cache_write, cache_invalidate;
+  logic head_hit, victim_valid, victim_dirty, flush_valid, flush_dirty;  // victim: the head page's slot
+  logic [NW-1:0] victim_page, flush_page;
+  logic [PW-1:0] victim_data, flush_data, cache_load_data;
   logic [CW-1:0] cell_new, cell_old;
 
   // The pixel at the head of the FIFO and the one in hand.
@@ -101,13 +104,15 @@ module had (
   assign b = pix_q[girtd_pkg::FIFO_B_LSB+:CO];
   assign nf = pix_q[girtd_pkg::FIFO_NF_LSB+:NFW];
   assign z = pix_q[girtd_pkg::FIFO_Z_LSB+:ZO];
-  assign cell_old = cache_data[32'(x)*CW+:CW];
   assign zb = cell_old[ZO-1:0];
 
   pixel_cache u_cache (
-      .clk_i, .rst_ni, .invalidate_i(cache_invalidate), .load_i(cache_load), .load_page_i(pix_page),
-      .load_data_i(cache_load_data), .write_i(cache_write), .write_index_i(x), .write_data_i(cell_new),
-      .valid_o(cache_valid), .page_o(cache_page), .data_o(cache_data));
+      .clk_i, .rst_ni, .head_page_i(head_page), .head_hit_o(head_hit), .head_slot_valid_o(victim_valid),
+      .head_slot_dirty_o(victim_dirty), .head_slot_page_o(victim_page), .head_slot_data_o(victim_data),
+      .pix_page_i(pix_page), .pix_index_i(x), .pix_cell_o(cell_old), .flush_slot_i(flush_slot_q),
+      .flush_valid_o(flush_valid), .flush_dirty_o(flush_dirty), .flush_page_o(flush_page), .flush_data_o(flush_data),
+      .invalidate_i(cache_invalidate), .load_i(cache_load), .load_page_i(pix_page), .load_data_i(cache_load_data),
+      .write_i(cache_write), .write_data_i(cell_new));
 
   // Cb = C nf + Cb (1 - nf), CO x NF products keeping the high bits (8 x 8 in the thesis).
   localparam int F = girtd_pkg::NORM_FRAC;
@@ -132,11 +137,12 @@ module had (
   end
 
   // ---- Decisions of this tick ----
-  logic head_hit, head_in_pf, must_write_back, background_ok;
-  logic miss_go, miss_wait_pf, flush_go, wb_issue, pf_issue;
-  assign head_hit = cache_valid && cache_page == head_page;
+  logic head_in_pf, must_write_back, flush_write_back, background_ok;
+  logic miss_go, miss_wait_pf, flush_go, flush_step, wb_issue, pf_issue;
   assign head_in_pf = pf_page_q == head_page && (pf_valid_q || pf_loading_q);
-  assign must_write_back = cache_valid && (dirty_q || !dirty_bits_i);
+  // On a miss the page in the head's slot goes back; at the frame's end, each slot's.
+  assign must_write_back = victim_valid && (victim_dirty || !dirty_bits_i);
+  assign flush_write_back = flush_valid && (flush_dirty || !dirty_bits_i);
   assign background_ok = state_q == H_IDLE || state_q == H_ACCESS || state_q == H_BLEND;
   // A miss proceeds when the VRAM is free and no write-behind is pending; a
   // miss on the page being prefetched waits for it instead.
@@ -144,19 +150,20 @@ module had (
   // A pending flush waits for the FIFO to drain; pixels keep flowing meanwhile.
   assign miss_go = state_q == H_IDLE && !fifo_empty_i && !head_hit && !miss_wait_pf &&
                    !vram_busy_i && !wb_pending_q && !pf_loading_q;
-  assign flush_go = state_q == H_IDLE && flush_pending_q && fifo_empty_i && !vram_busy_i && !wb_pending_q &&
-                    !pf_loading_q && must_write_back;
+  assign flush_step = state_q == H_IDLE && flush_pending_q && fifo_empty_i && !vram_busy_i && !wb_pending_q &&
+                      !pf_loading_q;
+  assign flush_go = flush_step && flush_write_back;
   assign wb_issue = background_ok && wb_pending_q && !vram_busy_i;
   // Prefetch the head's page while the HAD is busy with a pixel of another page.
   assign pf_issue = prefetch_i && background_ok && state_q != H_IDLE && !wb_pending_q && !vram_busy_i &&
-                    !pf_valid_q && !pf_loading_q && !fifo_empty_i && cache_valid && head_page != cache_page;
+                    !pf_valid_q && !pf_loading_q && !fifo_empty_i && victim_valid && !head_hit;
 
   always_comb begin
     fifo_pop_o = 1'b0;
     vram_req_o = 1'b0;
     vram_we_o = 1'b0;
-    vram_page_o = cache_page;
-    vram_wdata_o = cache_data;
+    vram_page_o = victim_page;
+    vram_wdata_o = victim_data;
     cache_load = 1'b0;
     cache_load_data = use_pf_q ? pf_data_q : vram_rdata_i;
     cache_write = 1'b0;
@@ -185,6 +192,8 @@ module had (
         end else if (flush_go) begin
           vram_req_o = 1'b1;
           vram_we_o = 1'b1;
+          vram_page_o = flush_page;
+          vram_wdata_o = flush_data;
         end
       end
       // The fetch follows the write-back in the same tick, unless the VRAM is
@@ -196,10 +205,22 @@ module had (
       H_FETCH: cache_load = use_pf_q || vram_done_i;
       H_ACCESS: cache_write = count_q == ONE_TICK && z_pass && nf != '0 && (opaque || blend_ticks_i == 0);
       H_BLEND: cache_write = count_q == ONE_TICK;
-      H_FLUSH: cache_invalidate = vram_done_i || !must_write_back;
+      H_FLUSH: cache_invalidate = vram_done_i || !flush_write_back;
       default: ;
     endcase
   end
+
+  // The flush goes on to the next slot; after the last, it is done.
+  localparam int PAGES = girtd_pkg::CACHE_PAGES;
+  task automatic next_flush_slot();
+    if (32'(flush_slot_q) == PAGES - 1) begin
+      flush_slot_q <= '0;
+      flush_pending_q <= 1'b0;
+      pf_valid_q <= 1'b0;
+    end else begin
+      flush_slot_q <= flush_slot_q + 1'b1;
+    end
+  endtask
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -208,7 +229,7 @@ module had (
       wb_pending_q <= 1'b0;
       pf_valid_q <= 1'b0;
       pf_loading_q <= 1'b0;
-      dirty_q <= 1'b0;
+      flush_slot_q <= '0;
       use_pf_q <= 1'b0;
       {written_o, blended_o, z_rejected_o, dropped_o, page_misses_o} <= '0;
       busy_ticks_o <= '0;
@@ -226,8 +247,6 @@ module had (
         pf_valid_q <= 1'b1;
         pf_data_q <= vram_rdata_i;
       end
-      if (cache_write) dirty_q <= 1'b1;
-      if (cache_load) dirty_q <= 1'b0;
       if (state_q != H_IDLE || fifo_pop_o) busy_ticks_o <= busy_ticks_o + 1'b1;
       if (state_q == H_WB || state_q == H_REFETCH || (state_q == H_FETCH && !use_pf_q) ||
           (state_q == H_IDLE && !fifo_empty_i && !head_hit && !fifo_pop_o))
@@ -247,16 +266,14 @@ module had (
             else begin
               if (must_write_back) begin  // the old page goes to the write-behind register
                 wb_pending_q <= 1'b1;
-                wb_page_q <= cache_page;
-                wb_data_q <= cache_data;
+                wb_page_q <= victim_page;
+                wb_data_q <= victim_data;
               end
               state_q <= H_FETCH;
             end
-          end else if (flush_go) state_q <= H_FLUSH;
-          else if (flush_pending_q && fifo_empty_i && !vram_busy_i && !wb_pending_q && !pf_loading_q) begin
-            flush_pending_q <= 1'b0;  // nothing (more) to write back
-            pf_valid_q <= 1'b0;
-            if (cache_valid) state_q <= H_FLUSH;
+          end else if (flush_step) begin
+            if (flush_valid) state_q <= H_FLUSH;  // written back there (or only forgotten: clean)
+            else next_flush_slot();
           end
         end
         H_WB: if (vram_done_i) state_q <= use_pf_q || !vram_busy_i ? H_FETCH : H_REFETCH;
@@ -290,10 +307,9 @@ module had (
           if (count_q > ONE_TICK) count_q <= count_q - 1'b1;
           else state_q <= H_IDLE;
         end
-        H_FLUSH: if (vram_done_i || !must_write_back) begin
+        H_FLUSH: if (vram_done_i || !flush_write_back) begin
           state_q <= H_IDLE;
-          flush_pending_q <= 1'b0;
-          pf_valid_q <= 1'b0;
+          next_flush_slot();
         end
         default: state_q <= H_IDLE;
       endcase

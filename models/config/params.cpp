@@ -99,6 +99,8 @@ Params build(const ConfigLayers& layers) {
     p.had_write_behind = r.flag("had.write_behind");
     p.had_prefetch = r.flag("had.prefetch");
     p.had_dirty_bits = r.flag("had.dirty_bits");
+    p.cache_pages = r.integer("cache.pages", 1, 64);
+    if ((p.cache_pages & (p.cache_pages - 1)) != 0) r.fail("cache.pages", "must be a power of two (a page's slot is bits of its number)");
     p.cache_page_width = r.integer("cache.page_width", 1, 1024);
     p.cache_page_height = r.integer("cache.page_height", 1, 1024);
     for (const char* key : {"cache.page_width", "cache.page_height"}) {

@@ -48,6 +48,7 @@ struct Params {
   bool had_write_behind;      // 5.2.2 improvements, off in the thesis' design
   bool had_prefetch;
   bool had_dirty_bits;        // skip writing back a page no pixel was written to
+  int cache_pages;            // pages in the HAD's cache (direct-mapped)
   int cache_page_width;       // a cache page (one VRAM cycle): pixels in X ...
   int cache_page_height;      // ... and in Y (16 x 1 in the thesis)
   double vram_cycle_ns;

@@ -1,5 +1,7 @@
 #include "config/rtl_layout.hpp"
 
+#include <algorithm>
+
 #include "dda/dda_engine.hpp"
 
 namespace girtd {
@@ -36,6 +38,9 @@ RtlLayout rtl_layout(const Params& p) {
   g.index_bits = g.x_bits + g.y_bits;
   g.screen_bits = l.screen_bits;
   g.number_bits = 2 * l.screen_bits - g.index_bits;
+
+  l.cache.pages = p.cache_pages;
+  l.cache.slot_bits = std::max(1, bits_for(uint64_t(p.cache_pages)));
 
   const int rgb = 3 * p.ep_color.out_bits;
   l.vram.z = {0, p.ep_z.out_bits};

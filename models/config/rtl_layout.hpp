@@ -19,6 +19,7 @@ inline constexpr int kRtlTimeBits = 16;       // HAD access and blend, VRAM cycl
 inline constexpr int kRtlLongTimeBits = 24;   // the frame clear, the steal period
 inline constexpr int kRtlCountBits = 32;      // pixel and miss counters
 inline constexpr int kRtlTickCountBits = 48;  // clock and tick counters
+inline constexpr int kRtlQExponentBits = 4;   // Q = 2^k, k = -4..3 (signed), on the DDA's parameter port
 
 inline constexpr int64_t max_of_bits(int bits) { return (int64_t{1} << bits) - 1; }
 
@@ -62,10 +63,18 @@ struct VramWordLayout {
   int cell_bits = 0;       // a pixel in the cache: RGB and Z
 };
 
+// The HAD's cache: `pages` slots, direct-mapped (page P in slot P mod pages).
+struct CacheGeometry {
+  int pages = 1;
+  int slot_bits = 1;  // a slot number (at least one bit, for the RTL's ports)
+  int slot_of(uint32_t page_number) const { return static_cast<int>(page_number % uint32_t(pages)); }
+};
+
 struct RtlLayout {
   int screen_bits = 0;       // X and Y of the 1024 x 1024 screen
   FifoWordLayout fifo;
   PageGeometry page;
+  CacheGeometry cache;
   VramWordLayout vram;
   int fifo_count_bits = 0;   // 0 .. fifo.max_depth entries
   int dda_state_bits = 0;    // the DDA's states and IDLE

@@ -50,7 +50,7 @@ json rtl_build_values(const Params& p) {
           {"nf", {{"norm_frac_bits", p.norm_frac_bits}, {"prom_frac_bits", p.prom_frac_bits}}},
           {"dda", {{"output_latency_clocks", p.output_latency_clocks}}},
           {"fifo", {{"max_depth", p.fifo_max_depth}}},
-          {"cache", {{"page_width", p.cache_page_width}, {"page_height", p.cache_page_height}}},
+          {"cache", {{"pages", p.cache_pages}, {"page_width", p.cache_page_width}, {"page_height", p.cache_page_height}}},
           {"depth", {{"clear", p.depth_clear}}}};
 }
 
@@ -103,7 +103,7 @@ std::string sv_package_text(const Params& p) {
   o << "\n  // Run-time timing ports (base ticks) and counters.\n"
     << param("DDA_PERIOD_W", kRtlDdaPeriodBits) << param("TIME_W", kRtlTimeBits)
     << param("LONG_TIME_W", kRtlLongTimeBits) << param("COUNT_W", kRtlCountBits)
-    << param("TICK_COUNT_W", kRtlTickCountBits);
+    << param("TICK_COUNT_W", kRtlTickCountBits) << param("Q_K_W", kRtlQExponentBits, "Q = 2^k, k signed");
   o << "\n  // The DDA -> HAD FIFO: the word, its fields, its depth.\n"
     << param("FIFO_W", l.fifo.width) << field("FIFO_X", l.fifo.x) << field("FIFO_Y", l.fifo.y)
     << field("FIFO_R", l.fifo.r) << field("FIFO_G", l.fifo.g) << field("FIFO_B", l.fifo.b)
@@ -114,7 +114,9 @@ std::string sv_package_text(const Params& p) {
        "  // X[..:PAGE_X_BITS]}, pixel in the page {Y[PAGE_Y_BITS-1:0], X[PAGE_X_BITS-1:0]}.\n"
     << param("PAGE_X_BITS", l.page.x_bits) << param("PAGE_Y_BITS", l.page.y_bits)
     << param("PAGE_PIXELS", l.page.pixels) << param("PAGE_INDEX_W", l.page.index_bits)
-    << param("PAGE_NUMBER_W", l.page.number_bits);
+    << param("PAGE_NUMBER_W", l.page.number_bits)
+    << param("CACHE_PAGES", l.cache.pages, "direct-mapped: page P in slot P mod CACHE_PAGES")
+    << param("CACHE_SLOT_W", l.cache.slot_bits);
   o << "\n  // The VRAM word: RGB buffer 0 (shown while front = 0), RGB buffer 1, Z;\n"
        "  // a cached pixel: the back buffer's RGB and Z.\n"
     << param("VRAM_W", l.vram.width) << field("VRAM_RGB0", l.vram.rgb0) << field("VRAM_RGB1", l.vram.rgb1)
@@ -126,13 +128,10 @@ std::string sv_package_text(const Params& p) {
     o << "  localparam logic [DDA_STATE_W-1:0] S_" << kDdaStateNames[s] << " = DDA_STATE_W'(" << s << ");\n";
   o << "  localparam logic [DDA_STATE_W-1:0] S_IDLE = DDA_STATE_W'(" << l.dda_idle_state << ");\n";
   o << "\n  // The one operation every EP and counter performs in a clock.\n"
-       "  localparam logic [2:0] OP_NONE = 3'd0;\n"
-       "  localparam logic [2:0] OP_LOAD = 3'd1;\n"
-       "  localparam logic [2:0] OP_XINC = 3'd2;\n"
-       "  localparam logic [2:0] OP_XDEC = 3'd3;\n"
-       "  localparam logic [2:0] OP_YINC = 3'd4;\n"
-       "  localparam logic [2:0] OP_SAVE = 3'd5;\n"
-       "  localparam logic [2:0] OP_RESTORE = 3'd6;\n"
+       "  localparam int OP_W = 3;\n";
+  const char* ops[] = {"NONE", "LOAD", "XINC", "XDEC", "YINC", "SAVE", "RESTORE"};
+  for (int i = 0; i < 7; ++i) o << "  localparam logic [OP_W-1:0] OP_" << ops[i] << " = OP_W'(" << i << ");\n";
+  o <<
        "  /* verilator lint_on UNUSEDPARAM */\n"
        "endpackage\n";
   return o.str();

@@ -13,7 +13,9 @@ BackendTimingModel::BackendTimingModel(const Params& p)
       vram_(p.ticks(p.vram_cycle_ns)),
       limit_(p.fifo_dda_had_depth),
       clear_ticks_(uint64_t(p.vram_serial_transfers) * (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns))),
-      page_(rtl_layout(p).page) {
+      page_(rtl_layout(p).page),
+      cache_(rtl_layout(p).cache),
+      slot_page_(size_t(cache_.pages), -1) {
   if (p.had_write_behind || p.had_prefetch || p.had_dirty_bits || p.vram_steal_every_ns > 0)
     throw InputError("--config", 0,
                      "the back-end timing model covers the design as written: turn off had.write_behind, "
@@ -52,17 +54,17 @@ void BackendTimingModel::push(const TimedPixel& p, uint64_t tick) {
   pushes_.push_back(tick);
   const uint64_t pop = std::max(tick + 1, had_free_);
   pops_.push_back(pop);
-  const int page = static_cast<int>(page_.number_of(p.x, p.y));
+  const uint32_t page = page_.number_of(p.x, p.y);
+  int64_t& in_slot = slot_page_[size_t(cache_.slot_of(page))];
   uint64_t done;
-  if (cache_valid_ && page == cache_page_) {
+  if (in_slot == int64_t(page)) {
     done = pop + std::max(access_, 2);
-  } else {
+  } else {  // the slot's page (if any) goes back, the new one comes in
     ++t_.page_misses;
-    const uint64_t loaded = pop + (cache_valid_ ? 2 * vram_ : vram_);
+    const uint64_t loaded = pop + (in_slot >= 0 ? 2 * vram_ : vram_);
     t_.had_vram_wait_ticks += loaded - pop;
     done = loaded + 1 + std::max(access_, 1);
-    cache_valid_ = true;
-    cache_page_ = page;
+    in_slot = page;
   }
   if (p.outcome == HadOutcome::kBlended) done += blend_;
   t_.had_busy_ticks += done - pop;
@@ -118,16 +120,22 @@ void BackendTimingModel::begin_frame() {
   t_.ticks += clear_ticks_;
   dda_at_ = t_.ticks;
   had_free_ = t_.ticks;
-  cache_valid_ = false;
+  std::fill(slot_page_.begin(), slot_page_.end(), -1);
 }
 
 void BackendTimingModel::end_frame() {
   drain();
-  if (cache_valid_) {
-    t_.ticks += 2 + vram_;  // flush request and write-back
-    t_.had_busy_ticks += vram_;  // the HAD's FLUSH state, as the RTL counts it
+  // The flush request, then slot by slot: a tick to look at it and, for a
+  // page, its write-back (the HAD's FLUSH state, counted busy as the RTL does).
+  t_.ticks += 1;
+  for (int64_t& in_slot : slot_page_) {
+    t_.ticks += 1;
+    if (in_slot >= 0) {
+      t_.ticks += vram_;
+      t_.had_busy_ticks += vram_;
+    }
+    in_slot = -1;
   }
-  cache_valid_ = false;
   t_.ticks += 1;  // swap
   dda_at_ = had_free_ = t_.ticks;
 }

@@ -72,10 +72,10 @@ class BackendTimingModel {
   int period_, access_, blend_, vram_, limit_;
   uint64_t clear_ticks_;
   PageGeometry page_;      // which pixels share a cache page
+  CacheGeometry cache_;    // which slot a page takes
   uint64_t dda_at_ = 0;    // the DDA's next enabled tick
   uint64_t had_free_ = 0;  // the HAD's next IDLE tick
-  bool cache_valid_ = false;
-  int cache_page_ = -1;
+  std::vector<int64_t> slot_page_;  // the page in each cache slot, -1: none
   std::deque<uint64_t> pops_;  // pop ticks of pixels possibly still in the FIFO
   std::deque<uint64_t> pushes_;
   uint64_t tri_clock0_ = 0, tri_wait_ticks_ = 0;  // the triangle being streamed

@@ -10,6 +10,7 @@
 #include "common/triangle_setup.hpp"
 #include "config/params.hpp"
 #include "dda/dda_params.hpp"
+#include "config/rtl_layout.hpp"
 #include "config/rtl_package.hpp"
 #include "rtl_build.hpp"
 
@@ -40,7 +41,7 @@ void load_dda_ports(Top& top, const DdaParams& d, const Params& params) {
   set_port(top.xmax_i, d.xmax, xy);
   set_port(top.ymax_i, d.ymax, xy);
   top.q_zero_i = d.q == 0;
-  set_port(top.q_k_i, d.q == 0 ? 0 : q_log2(d.q), 4);
+  set_port(top.q_k_i, d.q == 0 ? 0 : q_log2(d.q), kRtlQExponentBits);
   auto ep = [](auto& v, auto& dx, auto& dy, const EpInit& e, int w) {
     set_port(v, e.v, w);
     set_port(dx, e.dx, w);
