@@ -38,8 +38,12 @@ function(girtd_generate_rtl_package out_dir)
   endforeach()
   if(stale)
     message(STATUS "Compiling girtd_gen_rtl (the RTL package generator)")
+    set(launcher "")
+    if(CCACHE_PROGRAM)
+      set(launcher ${CCACHE_PROGRAM})
+    endif()
     execute_process(
-      COMMAND ${CCACHE_PROGRAM} ${CMAKE_CXX_COMPILER} -std=c++17 -O1 -I${src} -I${CMAKE_BINARY_DIR}/generated
+      COMMAND ${launcher} ${CMAKE_CXX_COMPILER} -std=c++17 -O1 -I${src} -I${CMAKE_BINARY_DIR}/generated
               ${sources} -o ${tool}
       RESULT_VARIABLE rc ERROR_VARIABLE err)
     if(rc)

@@ -14,7 +14,7 @@ module dda_norm #(
 );
   logic signed [W:0] q_raw, sum;
   // Shift amounts, signed, wide enough for FRAC + k with any D format.
-  localparam int SHW = $clog2(FRAC + 8) + 2;
+  localparam int SHW = $clog2(FRAC + (1 << (girtd_pkg::Q_K_W - 1))) + 2;
   logic signed [SHW-1:0] q_shift;  // FRAC + k: Q as a raw D value is 1 << q_shift
   logic signed [SHW-1:0] shift;    // FRAC + k - NF
 

@@ -14,7 +14,7 @@ ConfigLayers ConfigLayers::builtin() {
   ConfigLayers c;
   const std::string text = kDefaultConfigJson;
   c.merged_ = json::parse(text);
-  for (const auto& [key, line] : json_key_lines(text)) c.places_[key] = {kDefaultConfigPath, line};
+  for (const auto& [key, line] : json_key_lines(text)) c.places_[key] = {kDefaultConfigPath, line, 0};
   return c;
 }
 
@@ -25,12 +25,14 @@ void ConfigLayers::merge_file(const std::string& path) {
   text << in.rdbuf();
   const json patch = parse_json_text(text.str(), path);
   if (!patch.is_object()) throw InputError(path, 1, "a configuration must be a JSON object");
+  ++layers_;
   merge(merged_, patch, "", path, json_key_lines(text.str()));
   files_.push_back(path);
 }
 
 void ConfigLayers::merge_json(const json& patch, const std::string& origin) {
   if (!patch.is_object()) throw InputError(origin, 0, "a configuration must be a JSON object");
+  ++layers_;
   merge(merged_, patch, "", origin, {});
 }
 
@@ -55,8 +57,19 @@ void ConfigLayers::merge(json& base, const json& patch, const std::string& path,
     if (!both_numbers && target.type() != it->type())
       throw InputError(origin, at, key + ": has the wrong type (expected " + std::string(target.type_name()) + ")");
     target = *it;
-    places_[key] = {origin, at};
+    places_[key] = {origin, at, layers_};
   }
+}
+
+std::string ConfigLayers::last_set(const std::vector<std::string>& keys) const {
+  std::string best = keys.front();
+  auto rank = [&](const std::string& k) {
+    const auto it = places_.find(k);
+    return it == places_.end() ? std::pair<int, int>{-1, 0} : std::pair<int, int>{it->second.layer, it->second.line};
+  };
+  for (const std::string& k : keys)
+    if (rank(k) > rank(best)) best = k;
+  return best;
 }
 
 InputError ConfigLayers::error(const std::string& key, const std::string& what) const {

@@ -30,17 +30,22 @@ class ConfigLayers {
   const std::vector<std::string>& files() const { return files_; }
   // The error for a value refused after merging, at the key's last setting.
   InputError error(const std::string& key, const std::string& what) const;
+  // Of keys refused together (a relation), the one a user set last: the
+  // later file, else the later line; a built-in value only if no user set any.
+  std::string last_set(const std::vector<std::string>& keys) const;
 
  private:
   struct Place {
     std::string file;
     int line = 0;
+    int layer = 0;  // 0: built in; 1, 2, ...: the user's files and patches in order
   };
   void merge(nlohmann::json& base, const nlohmann::json& patch, const std::string& path, const std::string& origin,
              const std::map<std::string, int>& lines);
   nlohmann::json merged_;
   std::map<std::string, Place> places_;
   std::vector<std::string> files_;
+  int layers_ = 0;
 };
 
 }  // namespace girtd

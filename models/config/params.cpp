@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "common/input_error.hpp"
 #include "config/config_layers.hpp"
@@ -38,6 +40,11 @@ class Reader {
   bool flag(const std::string& key) const { return at(key).get<bool>(); }
   std::string text(const std::string& key) const { return at(key).get<std::string>(); }
   [[noreturn]] void fail(const std::string& key, const std::string& what) const { throw c_.error(key, what); }
+  // A relation between keys fails at the one the user set last.
+  [[noreturn]] void fail_relation(const std::vector<std::string>& keys, const std::string& what) const {
+    const std::string key = c_.last_set(keys);
+    throw c_.error(key, what);
+  }
 
  private:
   const ConfigLayers& c_;
@@ -81,10 +88,11 @@ Params build(const ConfigLayers& layers) {
     p.xy_bits = r.integer("ep.xy_bits", 11, 32);  // X, Y up to 1023 and a sign
     p.norm_frac_bits = r.integer("nf.norm_frac_bits", 8, 8);  // the HAD multiplies 8 x 8 bits
     p.prom_frac_bits = r.integer("nf.prom_frac_bits", 1, 8);
-    if (p.ep_d.frac_bits < p.norm_frac_bits) r.fail("ep.d.frac_bits", "must be at least nf.norm_frac_bits");
+    if (p.ep_d.frac_bits < p.norm_frac_bits)
+      r.fail_relation({"ep.d.frac_bits", "nf.norm_frac_bits"}, "ep.d.frac_bits must be at least nf.norm_frac_bits");
 
     p.base_tick_ns = r.real("timing.base_tick_ns");
-    if (!(p.base_tick_ns > 0)) r.fail("timing.base_tick_ns", "must be positive");
+    if (!(p.base_tick_ns > 0) || p.base_tick_ns > 1e6) r.fail("timing.base_tick_ns", "must be above 0 and at most 1e6 ns");
     p.dda_clock_ns = period(r, "dda.clock_ns", p.base_tick_ns, false, max_of_bits(kRtlDdaPeriodBits));
     p.xy_compare_pipelined = r.flag("dda.xy_compare_pipelined");
     p.walk_fix = r.flag("dda.walk_fix");
@@ -108,29 +116,34 @@ Params build(const ConfigLayers& layers) {
       if ((v & (v - 1)) != 0) r.fail(key, "must be a power of two (the page is a field of the pixel address)");
     }
     if (p.cache_page_width * p.cache_page_height > 64 || p.cache_page_width * p.cache_page_height < 2)
-      r.fail("cache.page_height", "a page holds 2 to 64 pixels (page_width x page_height)");
+      r.fail_relation({"cache.page_width", "cache.page_height"}, "a page holds 2 to 64 pixels (page_width x page_height)");
 
     p.vram_cycle_ns = period(r, "vram.cycle_ns", p.base_tick_ns, false, max_of_bits(kRtlTimeBits));
     p.vram_serial_ns = period(r, "vram.serial_ns", p.base_tick_ns, true, max_of_bits(kRtlTimeBits));
     const int64_t long_max = max_of_bits(kRtlLongTimeBits);
     p.vram_serial_transfers = r.integer("vram.serial_transfers", 0, static_cast<int>(long_max));
     if (int64_t(p.vram_serial_transfers) * (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)) > long_max)
-      r.fail("vram.serial_transfers", "the frame clear (serial_transfers x (serial_ns + cycle_ns)) must be at most " +
+      r.fail_relation({"vram.serial_transfers", "vram.serial_ns", "vram.cycle_ns"}, "the frame clear (serial_transfers x (serial_ns + cycle_ns)) must be at most " +
                                           std::to_string(long_max) + " base ticks (the RTL's port)");
     p.vram_steal_every_ns = period(r, "vram.steal_every_ns", p.base_tick_ns, true, long_max);
     if (p.vram_steal_every_ns > 0 && p.vram_steal_every_ns < 2 * p.vram_cycle_ns)
-      r.fail("vram.steal_every_ns", "must be 0 (off) or at least two VRAM cycles");
+      r.fail_relation({"vram.steal_every_ns", "vram.cycle_ns"}, "vram.steal_every_ns must be 0 (off) or at least two VRAM cycles");
 
-    p.fifo_max_depth = r.integer("fifo.max_depth", 1, 65535);
-    p.fifo_dda_had_depth = r.integer("fifo.dda_had_depth", 1, 65535);
-    if (p.fifo_dda_had_depth > p.fifo_max_depth) r.fail("fifo.dda_had_depth", "must be at most fifo.max_depth");
+    // The RTL FIFO is built max_depth deep (2.. so its pointer has a bit;
+    // up to 4096, a memory Verilator still builds in a minute).
+    p.fifo_max_depth = r.integer("fifo.max_depth", 2, 4096);
+    p.fifo_dda_had_depth = r.integer("fifo.dda_had_depth", 1, 4096);
+    if (p.fifo_dda_had_depth > p.fifo_max_depth)
+      r.fail_relation({"fifo.dda_had_depth", "fifo.max_depth"}, "fifo.dda_had_depth must be at most fifo.max_depth");
 
-    p.depth_clear = r.integer("depth.clear", 0, 65535);
-    p.depth_max_mapped = r.integer("depth.max_mapped", 0, 65535);
+    const int z_max = static_cast<int>(max_of_bits(p.ep_z.out_bits));  // the VRAM's Z field
+    p.depth_clear = r.integer("depth.clear", 0, z_max);
+    p.depth_max_mapped = r.integer("depth.max_mapped", 0, z_max);
     if (p.depth_max_mapped >= p.depth_clear)
-      r.fail("depth.max_mapped", "must be below depth.clear (a drawn pixel must pass the cleared Z)");
+      r.fail_relation({"depth.max_mapped", "depth.clear"}, "depth.max_mapped must be below depth.clear (a drawn pixel must pass the cleared Z)");
 
     p.thesis.kc = r.real("thesis.kc");
+    if (!(p.thesis.kc > 0)) r.fail("thesis.kc", "must be positive");
     p.thesis.width = r.integer("thesis.width", 1, 1024);
     p.thesis.height = r.integer("thesis.height", 1, 1024);
     p.thesis.ep_color = format_of(r, "thesis.ep.color", true);

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <iterator>
 #include <sstream>
 
 #include "config/rtl_layout.hpp"
@@ -34,8 +35,7 @@ std::string param(const char* name, int value, const char* why = nullptr) {
 }
 
 std::string field(const char* name, const BitField& f) {
-  return "  localparam int " + std::string(name) + "_LSB = " + std::to_string(f.lsb) + ", " + name +
-         "_W = " + std::to_string(f.width) + ";\n";
+  return param((std::string(name) + "_LSB").c_str(), f.lsb) + param((std::string(name) + "_W").c_str(), f.width);
 }
 
 }  // namespace
@@ -93,9 +93,9 @@ std::string sv_package_text(const Params& p) {
     const FixFormat& f;
   } eps[] = {{"COLOR", p.ep_color}, {"T", p.ep_t}, {"Z", p.ep_z}, {"D", p.ep_d}};
   for (const auto& e : eps) {
-    o << "  localparam int " << e.name << "_FRAC = " << e.f.frac_bits << ", " << e.name << "_W = " << e.f.total_bits();
-    if (e.f.out_bits > 0) o << ", " << e.name << "_OUT = " << e.f.out_bits;
-    o << ";\n";
+    const std::string n = e.name;
+    o << param((n + "_FRAC").c_str(), e.f.frac_bits) << param((n + "_W").c_str(), e.f.total_bits());
+    if (e.f.out_bits > 0) o << param((n + "_OUT").c_str(), e.f.out_bits);
   }
   o << param("XY_W", p.xy_bits) << param("NORM_FRAC", p.norm_frac_bits) << param("NF_W", p.norm_frac_bits + 1, "1.8: 256 is 1.0")
     << param("PROM_FRAC", p.prom_frac_bits) << param("OUT_LATENCY", p.output_latency_clocks)
@@ -130,7 +130,7 @@ std::string sv_package_text(const Params& p) {
   o << "\n  // The one operation every EP and counter performs in a clock.\n"
        "  localparam int OP_W = 3;\n";
   const char* ops[] = {"NONE", "LOAD", "XINC", "XDEC", "YINC", "SAVE", "RESTORE"};
-  for (int i = 0; i < 7; ++i) o << "  localparam logic [OP_W-1:0] OP_" << ops[i] << " = OP_W'(" << i << ");\n";
+  for (int i = 0; i < int(std::size(ops)); ++i) o << "  localparam logic [OP_W-1:0] OP_" << ops[i] << " = OP_W'(" << i << ");\n";
   o <<
        "  /* verilator lint_on UNUSEDPARAM */\n"
        "endpackage\n";

@@ -110,8 +110,11 @@ void BackendTimingModel::triangle(uint64_t dda_cycles, const std::vector<TimedPi
   end_triangle(dda_cycles);
 }
 
+// The back end is idle only on a DDA clock: the DDA shows it is ready for a
+// parameter set on an enabled tick (hw/dda in_ready_o), so an idle back end
+// is seen at the first enabled tick once the DDA and the HAD are done.
 void BackendTimingModel::drain() {
-  t_.ticks = std::max({t_.ticks, dda_at_, had_free_});
+  t_.ticks = next_en(std::max({t_.ticks, dda_at_, had_free_}));
   dda_at_ = t_.ticks;
 }
 
@@ -136,7 +139,7 @@ void BackendTimingModel::end_frame() {
     }
     in_slot = -1;
   }
-  t_.ticks += 1;  // swap
+  t_.ticks = next_en(t_.ticks) + 1;  // the swap, once the back end is seen idle (a DDA clock)
   dda_at_ = had_free_ = t_.ticks;
 }
 

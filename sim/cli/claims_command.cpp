@@ -19,6 +19,7 @@
 #include "claims/thesis_losses.hpp"
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
+#include "config/rtl_layout.hpp"
 #include "common/input_error.hpp"
 #include "io/subprocess.hpp"
 #include "rtl/memory_measurements.hpp"
@@ -111,10 +112,13 @@ std::string within_tick(double measured_ns, double thesis_ns, double tick_ns) {
 void memory_rows(const Params& p, std::vector<ClaimRow>& rows) {
   const double vram = 2 * p.vram_cycle_ns;  // a page swap: write back, then fetch
   const StreamTiming row = time_stream(p, PixelStream::kRow), col = time_stream(p, PixelStream::kColumn);
-  const double f16 = p.had_access_ns + vram / 16, f1 = p.had_access_ns + vram;
+  // A row stream stays in a page for its width, a column stream for its
+  // height (16 and 1 with the thesis' 16 x 1 page).
+  const PageGeometry page = rtl_layout(p).page;
+  const double f16 = p.had_access_ns + vram / page.width_px, f1 = p.had_access_ns + vram / page.height_px;
   rows.push_back({"cache time per pixel (RTL, directed streams)", "52.5 ns at nac = 16, 465 ns at nac = 1",
-                  fmt("nac = 16: %.1f ns (formula %.1f); nac = 1: %.1f ns (formula %.1f)", row.ns_per_pixel, f16,
-                      col.ns_per_pixel, f1),
+                  fmt("nac = %.0f: %.1f ns (formula %.1f); ", page.width_px, row.ns_per_pixel, f16) +
+                      fmt("nac = %.0f: %.1f ns (formula %.1f)", page.height_px, col.ns_per_pixel, f1),
                   within_tick(row.ns_per_pixel, f16, p.base_tick_ns) == "confirmed" &&
                           within_tick(col.ns_per_pixel, f1, p.base_tick_ns) == "confirmed"
                       ? "confirmed"
@@ -130,7 +134,7 @@ void memory_rows(const Params& p, std::vector<ClaimRow>& rows) {
   const StreamTiming wb_row = time_stream(wb, PixelStream::kRow);
   rows.push_back({"write-behind register (5.2.2), nac = 16", "halves VRAM time: 25 + 220/16 = 38.75 ns",
                   fmt("%.1f ns per pixel (without: %.1f)", wb_row.ns_per_pixel, row.ns_per_pixel),
-                  within_tick(wb_row.ns_per_pixel, p.had_access_ns + p.vram_cycle_ns / 16, p.base_tick_ns)});
+                  within_tick(wb_row.ns_per_pixel, p.had_access_ns + p.vram_cycle_ns / page.width_px, p.base_tick_ns)});
   Params pf = wb;
   pf.had_prefetch = true;
   const StreamTiming pf_row = time_stream(pf, PixelStream::kRow);
@@ -157,6 +161,7 @@ void memory_rows(const Params& p, std::vector<ClaimRow>& rows) {
   std::string waits;
   bool waits_at_16 = false;
   for (int depth : {4, 8, 16, 32}) {
+    if (depth > p.fifo_max_depth) continue;  // the RTL FIFO is built no deeper
     Params f = p;
     f.fifo_dda_had_depth = depth;
     const TraceTiming t = time_trace(f, "traces/demo.trace");

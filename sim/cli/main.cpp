@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
@@ -70,7 +71,9 @@ int main(int argc, char** argv) {
   try {
     // A configuration the built RTL is not elaborated for runs in an RTL
     // variant (render on rtl; regress, bench and claims drive the RTL too).
-    const bool drives_rtl = (*render && ra.backend == "rtl") || *regress || *bench || *claims;
+    // A render whose input is missing fails at once, before any build.
+    const bool drives_rtl =
+        (*render && ra.backend == "rtl" && std::filesystem::exists(ra.input)) || *regress || *bench || *claims;
     const ConfigFiles& config = *render ? ra.config : *regress ? rg.config : *bench ? bench_config : claims_config;
     if (drives_rtl) run_in_rtl_variant_if_needed(load_params(config), argv);
     if (*render) return run_render(ra);

@@ -68,6 +68,9 @@ class BackendRtlCore final : public BackendRtlDriver {
     set_port(t.vram_steal_period_ticks_i, p.ticks(p.vram_steal_every_ns), kRtlLongTimeBits);
     period_ = static_cast<uint64_t>(p.ticks(p.dda_clock_ns));
     steal_period_ = static_cast<uint64_t>(p.ticks(p.vram_steal_every_ns));
+    // Params holds 1 <= depth <= max_depth; code that sets the depth itself must too.
+    if (p.fifo_dda_had_depth < 1 || p.fifo_dda_had_depth > p.fifo_max_depth)
+      throw std::logic_error("FIFO limit " + std::to_string(p.fifo_dda_had_depth) + " outside 1..fifo.max_depth");
     set_port(t.fifo_limit_i, p.fifo_dda_had_depth, layout_.fifo_count_bits);
     t.write_behind_i = p.had_write_behind;
     t.prefetch_i = p.had_prefetch;

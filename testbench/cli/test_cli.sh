@@ -41,6 +41,17 @@ printf '{"dda": {"walk_fixx": true}}\n' > "$TMP/bad_config.json"
 "$GIRTD" render traces/equilateral_200.trace --config "$TMP/bad_config.json" --out "$TMP/cfg" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 ]] && grep -q "dda.walk_fixx" "$TMP/err" && ok || bad "unknown config key (exit $rc)"
 
+# --config repeats: later files win; a refused value is reported where it was written.
+printf '{\n  "fifo": {\n    "dda_had_depth": 40\n  }\n}\n' > "$TMP/depth40.json"
+printf '{"fifo": {"dda_had_depth": 8}}\n' > "$TMP/depth8.json"
+"$GIRTD" render traces/equilateral_200.trace --config "$TMP/depth40.json" --out "$TMP/cfg40" 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/cfg40" ]] \
+  && grep -qx "$TMP/depth40.json:3: fifo.dda_had_depth: fifo.dda_had_depth must be at most fifo.max_depth" "$TMP/err" \
+  && ok || bad "a depth over fifo.max_depth: exit $rc, $(cat "$TMP/err")"
+"$GIRTD" render traces/equilateral_200.trace --config "$TMP/depth40.json" --config "$TMP/depth8.json" \
+  --out "$TMP/cfg8" --quiet && [[ "$(jq .config.fifo.dda_had_depth "$TMP/cfg8/report.json")" == 8 ]] \
+  && ok || bad "the later --config does not win"
+
 # 3. --dump dda=FILE replays to the same picture.
 "$GIRTD" render traces/z_overlap.trace --backend golden --out "$TMP/z1" --dump "dda=$TMP/z.dda" --quiet && ok || bad "dump run"
 "$GIRTD" render "$TMP/z.dda" --backend golden --out "$TMP/z2" --quiet && ok || bad "replay run"

@@ -64,8 +64,9 @@ for run in "traces/directed/nf_rows.dda" "traces/models/cube.obj" "traces/models
   input=${run%% *}
   # shellcheck disable=SC2086
   "$GIRTD" render $run --backend rtl --out "$TMP/n0" --quiet
+  # A guard against a hang, generous enough for a sanitizer build on a busy machine.
   # shellcheck disable=SC2086
-  timeout 120 "$GIRTD" render $run --backend rtl --out "$TMP/n1" --wave "$TMP/n1.fst" --wave-window 0:110us --quiet \
+  timeout 900 "$GIRTD" render $run --backend rtl --out "$TMP/n1" --wave "$TMP/n1.fst" --wave-window 0:110us --quiet \
     && ok || bad "$input: --wave run failed or hung"
   for k in modeled_time_s pixels_generated dda_cycles time_split image_sha256; do
     [[ "$(jq -c .$k "$TMP/n0/report.json")" == "$(jq -c .$k "$TMP/n1/report.json")" ]] && ok \

@@ -21,6 +21,7 @@ void check_trace(const std::string& path) {
   CHECK(std::abs(double(c.model.ticks) - double(c.rtl.ticks)) <= 0.02 * double(c.rtl.ticks));
   // Measured: within 20 ticks per trace (the frame-end handshakes); hold it there.
   CHECK(std::abs(double(c.model.ticks) - double(c.rtl.ticks)) <= 32.0);
+  CHECK(c.model.ticks == c.rtl.ticks);
 }
 
 }  // namespace

@@ -58,7 +58,11 @@ TEST_CASE("a refused configuration value is reported at the line that set it", "
                                         "}\n");
   // A relation with a value of config/girtd.json (max_depth 32).
   CHECK(error_of([&] { Params::from_files({depth40}); }) ==
-        depth40 + ":4: fifo.dda_had_depth: must be at most fifo.max_depth");
+        depth40 + ":4: fifo.dda_had_depth: fifo.dda_had_depth must be at most fifo.max_depth");
+  // The other side of the relation: a user file that lowers max_depth is blamed.
+  const std::string max8 = temp_file("cfg_max8.json", "{\n\n  \"fifo\": {\"max_depth\": 8}}");
+  CHECK(error_of([&] { Params::from_files({max8}); }) ==
+        max8 + ":3: fifo.max_depth: fifo.dda_had_depth must be at most fifo.max_depth");
   // A later file that sets the key again takes the blame away.
   const std::string depth8 = temp_file("cfg_depth8.json", "{\n\"fifo\": {\"dda_had_depth\": 8}}");
   CHECK(error_of([&] { Params::from_files({depth40, depth8}); }).empty());
