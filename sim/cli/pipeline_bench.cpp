@@ -19,9 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kTimeTolerance = 0.02;       // approx against rtl
-constexpr uint64_t kTimedMinPixels = 100000;  // the tolerance applies from here
-
 std::vector<std::string> sample_inputs() {
   std::vector<std::string> out;
   for (const char* dir : {"traces", "traces/directed", "traces/models", "traces/scenes"}) {
@@ -70,10 +67,10 @@ PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config
       "Each render in its own process. Same frame: golden, approx and rtl give the same image SHA-256. Counts: "
       "triangles, pixels by HAD outcome, DDA clocks and clocks per state, HAD busy time, cache accesses and page "
       "misses, approx against rtl. Time: approx's modeled "
-      "time against rtl's (checked within 2 % from 100,000 pixels). Coupling: wall ns per simulated 5 ns base tick of "
+      "time against rtl's in base ticks (must be equal). Coupling: wall ns per simulated 5 ns base tick of "
       "rtl in the pipeline against the Verilated back end driven by a plain C++ loop on the same triangles (triangle "
       "traces only).\n\n"
-      "| input | pixels | same frame | same counts | rtl modeled ms | approx modeled ms | difference | rtl wall s | "
+      "| input | pixels | same frame | same counts | rtl modeled ms | approx modeled ms | difference (ticks) | rtl wall s | "
       "approx wall s | speed-up | rtl DDA clocks per wall s | rtl wall ns/tick | bare wall ns/tick | coupling cost |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   const bool as_written = !params.had_write_behind && !params.had_prefetch && !params.had_dirty_bits &&
@@ -98,7 +95,10 @@ PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config
     const bool counts = same_counts(a, r) && g.at("pixels_generated") == r.at("pixels_generated");
     const double rt = r.at("modeled_time_s"), at = a.at("modeled_time_s");
     const double diff = rt > 0 ? (at - rt) / rt : 0.0;
-    const bool time_ok = pixels < kTimedMinPixels || std::fabs(diff) <= kTimeTolerance;
+    // The event model is the RTL's timing: equal to the base tick.
+    const double tick_s = params.base_tick_ns * 1e-9;
+    const long long diff_ticks = std::llround(at / tick_s) - std::llround(rt / tick_s);
+    const bool time_ok = diff_ticks == 0;
     const double rw = r.at("wall_s"), aw = a.at("wall_s");
     const double clocks_per_s = rw > 0 ? r.at("dda_cycles").get<double>() / rw : 0.0;
     // Wall time per simulated base tick, in the pipeline and in the bare
@@ -114,15 +114,15 @@ PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config
     if (!same_frame || !counts || !time_ok) ++b.failures;
     b.rows.push_back({{"input", input}, {"pixels", pixels}, {"same_frame", same_frame}, {"same_counts", counts},
                       {"rtl_modeled_s", rt}, {"approx_modeled_s", at}, {"time_difference", diff},
-                      {"time_checked", pixels >= kTimedMinPixels}, {"rtl_wall_s", rw}, {"approx_wall_s", aw},
+                      {"time_difference_ticks", diff_ticks}, {"rtl_wall_s", rw}, {"approx_wall_s", aw},
                       {"rtl_dda_clocks_per_wall_s", clocks_per_s}, {"rtl_wall_ns_per_tick", rtl_ns_per_tick},
                       {"bare_rtl_wall_ns_per_tick", bare > 0 ? nlohmann::json(bare) : nlohmann::json(nullptr)}});
     char bare_cells[64] = "— | —";
     if (bare > 0) std::snprintf(bare_cells, sizeof bare_cells, "%.1f | %+.1f %%", bare, 100 * (rtl_ns_per_tick - bare) / bare);
     char line[768];
-    std::snprintf(line, sizeof line, "| %s | %llu | %s | %s | %.4f | %.4f | %+.4f %%%s | %.3f | %.3f | %.1fx | %.2e | %.1f | %s |\n",
+    std::snprintf(line, sizeof line, "| %s | %llu | %s | %s | %.4f | %.4f | %+lld%s | %.3f | %.3f | %.1fx | %.2e | %.1f | %s |\n",
                   input.c_str(), static_cast<unsigned long long>(pixels), same_frame ? "yes" : "NO", counts ? "yes" : "NO",
-                  rt * 1e3, at * 1e3, 100 * diff, time_ok ? "" : " (OVER 2 %)", rw, aw, aw > 0 ? rw / aw : 0.0,
+                  rt * 1e3, at * 1e3, diff_ticks, time_ok ? "" : " (NOT EQUAL)", rw, aw, aw > 0 ? rw / aw : 0.0,
                   clocks_per_s, rtl_ns_per_tick, bare_cells);
     b.markdown += line;
     std::fputs(line, stdout);
