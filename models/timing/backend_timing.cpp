@@ -12,7 +12,9 @@ BackendTimingModel::BackendTimingModel(const Params& p)
       blend_(p.ticks(p.had_blend_extra_ns)),
       vram_(p.ticks(p.vram_cycle_ns)),
       limit_(p.fifo_dda_had_depth),
-      clear_ticks_(uint64_t(p.vram_serial_transfers) * (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns))),
+      // hw/vram: a clear takes at least one tick.
+      clear_ticks_(std::max<uint64_t>(1, uint64_t(p.vram_serial_transfers) *
+                                             (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)))),
       page_(rtl_layout(p).page),
       cache_(rtl_layout(p).cache),
       slot_page_(size_t(cache_.pages), -1) {
@@ -120,7 +122,7 @@ void BackendTimingModel::drain() {
 
 void BackendTimingModel::begin_frame() {
   drain();
-  t_.ticks += clear_ticks_;
+  t_.ticks = next_en(t_.ticks + clear_ticks_);  // seen idle again on a DDA clock
   dda_at_ = t_.ticks;
   had_free_ = t_.ticks;
   std::fill(slot_page_.begin(), slot_page_.end(), -1);

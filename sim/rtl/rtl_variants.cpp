@@ -25,11 +25,14 @@ namespace {
 // ask for the same variant at once, and one of them builds it.
 class FileLock {
  public:
-  FileLock(const fs::path& path, const std::string& waiting) : fd_(::open(path.c_str(), O_CREAT | O_RDWR, 0644)) {
+  FileLock(const fs::path& path, const std::string& waiting) : fd_(::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644)) {
     if (fd_ < 0) throw std::runtime_error("cannot open the lock " + path.string());
     if (flock(fd_, LOCK_EX | LOCK_NB) == 0) return;
     std::fprintf(stderr, "%s\n", waiting.c_str());
-    if (flock(fd_, LOCK_EX) != 0) throw std::runtime_error("cannot lock " + path.string());
+    if (flock(fd_, LOCK_EX) != 0) {
+      ::close(fd_);
+      throw std::runtime_error("cannot lock " + path.string());
+    }
   }
   ~FileLock() {
     if (fd_ >= 0) ::close(fd_);  // closing releases the lock

@@ -70,4 +70,18 @@ grep -qE "\[girtd\] rtl: frame 1/1, [0-9]+/[0-9]+ triangles" "$TMP/tty" && ok ||
 "$GIRTD" render traces/scenes/window.json --backend rtl --out "$TMP/win2" --quiet 2> "$TMP/err" && ok || bad "rtl render"
 [[ ! -s "$TMP/err" ]] && ok || bad "stderr not empty without a terminal: $(head -c 200 "$TMP/err")"
 
+# approx is rtl's timing to the tick, also where the frame clear is no whole
+# number of DDA clocks (230 ns VRAM cycles) or takes no time at all.
+printf '{"vram": {"cycle_ns": 230.0}}\n' > "$TMP/vram230.json"
+printf '{"vram": {"serial_transfers": 0}}\n' > "$TMP/noclear.json"
+for cfg in vram230 noclear; do
+  for b in approx rtl; do
+    "$GIRTD" render traces/equilateral_200.trace --backend $b --config "$TMP/$cfg.json" --out "$TMP/$cfg-$b" --quiet \
+      && ok || bad "$cfg: $b render"
+  done
+  [[ "$(jq -c '[.modeled_time_s, .time_split]' "$TMP/$cfg-approx/report.json")" == \
+     "$(jq -c '[.modeled_time_s, .time_split]' "$TMP/$cfg-rtl/report.json")" ]] \
+    && ok || bad "$cfg: approx's time differs from rtl's"
+done
+
 finish
