@@ -1,8 +1,8 @@
 #include "config/config_layers.hpp"
 
-#include <fstream>
-#include <sstream>
+#include <optional>
 
+#include "common/file_text.hpp"
 #include "common/json_text.hpp"
 #include "girtd/default_config.hpp"
 
@@ -19,14 +19,12 @@ ConfigLayers ConfigLayers::builtin() {
 }
 
 void ConfigLayers::merge_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open configuration file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const json patch = parse_json_text(text.str(), path);
+  const std::optional<std::string> text = read_file_text(path);
+  if (!text) throw InputError(path, 0, "cannot open configuration file");
+  const json patch = parse_json_text(*text, path);
   if (!patch.is_object()) throw InputError(path, 1, "a configuration must be a JSON object");
   ++layers_;
-  merge(merged_, patch, "", path, json_key_lines(text.str()));
+  merge(merged_, patch, "", path, json_key_lines(*text));
   files_.push_back(path);
 }
 

@@ -6,21 +6,20 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "common/file_text.hpp"
 #include "common/input_error.hpp"
 #include "config/params.hpp"
 #include "config/rtl_package.hpp"
 
 namespace {
 
+using girtd::read_file_text;
+
 void write_if_changed(const std::filesystem::path& path, const std::string& text) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream old;
-  if (in) old << in.rdbuf();
-  if (in && old.str() == text) return;
+  if (read_file_text(path.string()) == text) return;
   const std::filesystem::path partial = path.string() + ".partial";
   std::ofstream(partial, std::ios::binary) << text;
   std::filesystem::rename(partial, path);

@@ -37,6 +37,12 @@ class Reader {
     if (!std::isfinite(x)) fail(key, "must be a finite number");
     return x;
   }
+  // An integer that is a field width in bits of some address: a power of two.
+  int power_of_two(const std::string& key, int lo, int hi, const std::string& why) const {
+    const int v = integer(key, lo, hi);
+    if ((v & (v - 1)) != 0) fail(key, "must be a power of two (" + why + ")");
+    return v;
+  }
   bool flag(const std::string& key) const { return at(key).get<bool>(); }
   std::string text(const std::string& key) const { return at(key).get<std::string>(); }
   [[noreturn]] void fail(const std::string& key, const std::string& what) const { throw c_.error(key, what); }
@@ -107,14 +113,9 @@ Params build(const ConfigLayers& layers) {
     p.had_write_behind = r.flag("had.write_behind");
     p.had_prefetch = r.flag("had.prefetch");
     p.had_dirty_bits = r.flag("had.dirty_bits");
-    p.cache_pages = r.integer("cache.pages", 1, 64);
-    if ((p.cache_pages & (p.cache_pages - 1)) != 0) r.fail("cache.pages", "must be a power of two (a page's slot is bits of its number)");
-    p.cache_page_width = r.integer("cache.page_width", 1, 1024);
-    p.cache_page_height = r.integer("cache.page_height", 1, 1024);
-    for (const char* key : {"cache.page_width", "cache.page_height"}) {
-      const int v = r.integer(key, 1, 1024);
-      if ((v & (v - 1)) != 0) r.fail(key, "must be a power of two (the page is a field of the pixel address)");
-    }
+    p.cache_pages = r.power_of_two("cache.pages", 1, 64, "a page's slot is bits of its number");
+    p.cache_page_width = r.power_of_two("cache.page_width", 1, 1024, "the page is a field of the pixel address");
+    p.cache_page_height = r.power_of_two("cache.page_height", 1, 1024, "the page is a field of the pixel address");
     if (p.cache_page_width * p.cache_page_height > 64 || p.cache_page_width * p.cache_page_height < 2)
       r.fail_relation({"cache.page_width", "cache.page_height"}, "a page holds 2 to 64 pixels (page_width x page_height)");
 

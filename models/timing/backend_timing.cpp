@@ -15,9 +15,8 @@ BackendTimingModel::BackendTimingModel(const Params& p)
       // hw/vram: a clear takes at least one tick.
       clear_ticks_(std::max<uint64_t>(1, uint64_t(p.vram_serial_transfers) *
                                              (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)))),
-      page_(rtl_layout(p).page),
-      cache_(rtl_layout(p).cache),
-      slot_page_(size_t(cache_.pages), -1) {
+      layout_(rtl_layout(p)),
+      slot_page_(size_t(layout_.cache.pages), -1) {
   if (p.had_write_behind || p.had_prefetch || p.had_dirty_bits || p.vram_steal_every_ns > 0)
     throw InputError("--config", 0,
                      "the back-end timing model covers the design as written: turn off had.write_behind, "
@@ -56,8 +55,8 @@ void BackendTimingModel::push(const TimedPixel& p, uint64_t tick) {
   pushes_.push_back(tick);
   const uint64_t pop = std::max(tick + 1, had_free_);
   pops_.push_back(pop);
-  const uint32_t page = page_.number_of(p.x, p.y);
-  int64_t& in_slot = slot_page_[size_t(cache_.slot_of(page))];
+  const uint32_t page = layout_.page.number_of(p.x, p.y);
+  int64_t& in_slot = slot_page_[size_t(layout_.cache.slot_of(page))];
   uint64_t done;
   if (in_slot == int64_t(page)) {
     done = pop + std::max(access_, 2);

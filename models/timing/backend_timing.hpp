@@ -71,8 +71,7 @@ class BackendTimingModel {
 
   int period_, access_, blend_, vram_, limit_;
   uint64_t clear_ticks_;
-  PageGeometry page_;      // which pixels share a cache page
-  CacheGeometry cache_;    // which slot a page takes
+  RtlLayout layout_;       // which pixels share a cache page, which slot a page takes
   uint64_t dda_at_ = 0;    // the DDA's next enabled tick
   uint64_t had_free_ = 0;  // the HAD's next IDLE tick
   std::vector<int64_t> slot_page_;  // the page in each cache slot, -1: none

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -11,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/file_text.hpp"
 #include "common/input_error.hpp"
 #include "common/json_text.hpp"
 #include "frontend/rotation.hpp"
@@ -110,11 +110,9 @@ LightSet default_lights() {
 class SceneReader {
  public:
   SceneReader(const std::string& path, const Params& params) : path_(path), params_(params) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path, 0, "cannot open file");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    text_ = ss.str();
+    std::optional<std::string> text = read_file_text(path);
+    if (!text) throw InputError(path, 0, "cannot open file");
+    text_ = std::move(*text);
     check_json_nesting(text_, path);
     root_ = parse_json_text(text_, path);
     lines_ = std::make_unique<JsonLines>(text_);

@@ -8,9 +8,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
+#include "common/file_text.hpp"
 #include "config/rtl_package.hpp"
 #include "io/subprocess.hpp"
 #include "rtl/rtl_build_info.hpp"
@@ -53,12 +53,7 @@ std::string last_lines(const fs::path& log, int n) {
   return out;
 }
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string read_text(const fs::path& path) { return read_file_text(path.string()).value_or(""); }
 
 // True when ninja has something to do for the variant's girtd.
 bool out_of_date(const fs::path& dir) {
