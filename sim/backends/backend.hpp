@@ -17,8 +17,6 @@ class Backend {
  public:
   virtual ~Backend() = default;
   virtual std::string name() const = 0;
-  // Report keys this back end cannot know (their values are null).
-  virtual std::vector<std::string> not_modeled() const = 0;
   // Before the first frame: throws InputError for input this back end cannot
   // take, and sets itself up for the trace's level.
   virtual void begin(const Trace& trace) = 0;

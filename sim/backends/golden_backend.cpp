@@ -12,11 +12,6 @@ void accumulate(DdaRunStats& total, const DdaRunStats& one) {
   total.ended_at_limit = total.ended_at_limit || one.ended_at_limit;
 }
 
-std::vector<std::string> GoldenBackend::not_modeled() const {
-  return {"modeled_time_s", "modeled_mpixels_per_s", "bottleneck", "cache.accesses",
-          "cache.page_misses", "cache.nac", "stages.*.busy_s", "stages.*.stall_s"};
-}
-
 void GoldenBackend::begin(const Trace& trace) {
   thesis_mode_ = trace.level == TraceLevel::kThesis;
   if (trace.level == TraceLevel::kThesis) return;  // PIX_INTERNO fixes Q = 1

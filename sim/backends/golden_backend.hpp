@@ -15,7 +15,6 @@ class GoldenBackend : public Backend {
       : preparer_(p), engine_(p), thesis_params_(p.with_thesis_formats()),
         ddapix_(thesis_params_, ThesisInside::kProgram) {}
   std::string name() const override { return "golden"; }
-  std::vector<std::string> not_modeled() const override;
   void begin(const Trace& trace) override;
   void draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) override;
   void finish(RunStats& stats) const override;

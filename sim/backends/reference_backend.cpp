@@ -5,11 +5,6 @@
 
 namespace girtd {
 
-std::vector<std::string> ReferenceBackend::not_modeled() const {
-  return {"dda_cycles", "dda_efficiency", "modeled_time_s", "modeled_mpixels_per_s", "bottleneck",
-          "cache.accesses", "cache.page_misses", "cache.nac", "stages.*.busy_s", "stages.*.stall_s"};
-}
-
 void ReferenceBackend::begin(const Trace& trace) {
   if (trace.level != TraceLevel::kTriangle)
     throw InputError(trace.path, 0,

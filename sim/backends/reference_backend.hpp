@@ -8,7 +8,6 @@ namespace girtd {
 class ReferenceBackend : public Backend {
  public:
   std::string name() const override { return "reference"; }
-  std::vector<std::string> not_modeled() const override;
   void begin(const Trace& trace) override;
   void draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) override;
   void finish(RunStats& stats) const override;

@@ -1,5 +1,5 @@
-// What a render measured, back-end independent. std::nullopt = this back end
-// does not model it (reported as null and listed in not_modeled).
+// What a render measured, back-end independent; std::nullopt = not measured.
+// The report's keys and which back ends know them: report/report_keys.hpp.
 #pragma once
 
 #include <array>
@@ -24,6 +24,8 @@ struct StageStats {
   std::optional<double> blocked_s;    // waiting for room downstream
   std::optional<double> flops;        // arithmetic done (front-end stages, preparer)
   std::optional<uint64_t> fifo_in_max;  // most items ever in the FIFO in front of it
+  // Timed front-end stages: when each frame began and ended (modeled s).
+  std::vector<double> frame_begin_s, frame_end_s;
 };
 
 // A stage of an untimed back end: items only.

@@ -14,6 +14,7 @@
 #include "cli/config_loader.hpp"
 #include "cli/output_set.hpp"
 #include "cli/pipeline_bench.hpp"
+#include "io/workloads.hpp"
 #include "common/input_error.hpp"
 #include "io/trace_reader.hpp"
 #include "rtl/timing_comparison.hpp"
@@ -48,21 +49,13 @@ ImageError compare(const RgbImage& a, const RgbImage& b) {
   return e;
 }
 
-std::vector<std::string> sample_traces() {
-  std::vector<std::string> out;
-  if (!fs::is_directory("traces")) throw InputError("traces", 0, "run bench from the repository root (no traces/ here)");
-  for (const auto& e : fs::directory_iterator("traces"))
-    if (e.path().extension() == ".trace") out.push_back(e.path().string());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 }  // namespace
 
-int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only) {
+int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool bless) {
   const Params params = load_params(config);
+  if (bless && !pipeline_only) throw InputError("--bless", 0, "blessing runs the pipeline table: add --pipeline");
   if (pipeline_only) {
-    const PipelineBench pb = run_pipeline_bench(params, config, out_dir);
+    const PipelineBench pb = run_pipeline_bench(params, config, out_dir, bless);
     OutputSet files(out_dir);
     files.add_text("pipeline.json", nlohmann::json{{"rows", pb.rows}, {"config", params.source}}.dump(2) + "\n");
     files.add_text("pipeline.md", "# girtd bench --pipeline\n" + pb.markdown);
@@ -74,7 +67,7 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
   std::string md =
       "| trace | back end | triangles | pixels | wall s | sim Mpixel/s | mean abs err | max abs err | pixels differing |\n"
       "|---|---|---|---|---|---|---|---|---|\n";
-  for (const std::string& path : sample_traces()) {
+  for (const std::string& path : sample_traces_at({TraceLevel::kTriangle})) {
     const Trace trace = read_trace(path, std::nullopt, params);
     if (trace.level != TraceLevel::kTriangle) continue;
     RgbImage reference;
@@ -109,7 +102,7 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
   const bool as_written = !params.had_write_behind && !params.had_prefetch && !params.had_dirty_bits &&
                           params.vram_steal_every_ns == 0;
   if (!as_written) md2 += "(skipped: the event model covers the design as written, without the memory options)\n";
-  for (const std::string& path : as_written ? sample_traces() : std::vector<std::string>{}) {
+  for (const std::string& path : as_written ? sample_traces_at({TraceLevel::kTriangle}) : std::vector<std::string>{}) {
     if (header_level(path) != TraceLevel::kTriangle) continue;
     const TimingComparison c = compare_timing(params, path);
     const double rtl_ms = double(c.rtl.ticks) * params.base_tick_ns * 1e-6;

@@ -28,7 +28,8 @@ struct RenderArgs {
 
 int run_render(const RenderArgs& a);
 int run_claims(const ConfigFiles& config);
-int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only);
+// bless: rewrite the stored expectations from this run (cli/expectations.hpp).
+int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool bless);
 struct RegressArgs {
   std::vector<std::string> traces;  // empty: every trace under traces/
   int random = 0;                   // extra random triangles

@@ -47,11 +47,15 @@ int main(int argc, char** argv) {
   bench->add_option("--config", bench_config, kConfigHelp)->allow_extra_args(false);
   bench->add_option("--out", bench_out, "output directory")->capture_default_str();
   bool bench_pipeline = false;
-  bench->add_flag("--pipeline", bench_pipeline, "only the SystemC pipeline's table (approx against rtl); exit 1 on a disagreement");
+  bench->add_flag("--pipeline", bench_pipeline,
+                  "only the SystemC pipeline's table (approx against rtl, every back end against the stored "
+                  "expectations); exit 1 on a disagreement");
+  bool bench_bless = false;
+  bench->add_flag("--bless", bench_bless, "with --pipeline: rewrite testbench/golden/expectations.json from this run");
 
   RegressArgs rg;
   CLI::App* regress = app.add_subcommand("regress", "RTL against the golden model, trace by trace");
-  regress->add_option("traces", rg.traces, "traces (default: every trace in traces/)");
+  regress->add_option("traces", rg.traces, "traces (default: the triangle- and DDA-level traces of traces/workloads.txt)");
   regress->add_option("--random", rg.random, "also N random triangles");
   regress->add_option("--seed", rg.seed, "seed of the random triangles")->capture_default_str();
   regress->add_option("--stall", rg.stall, "back-pressure probability on every other triangle")->capture_default_str();
@@ -78,7 +82,7 @@ int main(int argc, char** argv) {
     if (drives_rtl) run_in_rtl_variant_if_needed(load_params(config), argv);
     if (*render) return run_render(ra);
     if (*claims) return run_claims(claims_config);
-    if (*bench) return run_bench(bench_config, bench_out, bench_pipeline);
+    if (*bench) return run_bench(bench_config, bench_out, bench_pipeline, bench_bless);
     if (*regress) return run_regress(rg);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.formatted().c_str());

@@ -12,30 +12,14 @@
 
 #include "io/subprocess.hpp"
 #include "io/trace_reader.hpp"
+#include "io/workloads.hpp"
+#include "cli/expectations.hpp"
 #include "rtl/timing_comparison.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::vector<std::string> sample_inputs() {
-  std::vector<std::string> out;
-  for (const char* dir : {"traces", "traces/directed", "traces/models", "traces/scenes"}) {
-    if (!fs::is_directory(dir)) continue;
-    std::vector<std::string> here;
-    for (const auto& e : fs::directory_iterator(dir)) {
-      const std::string ext = e.path().extension().string();
-      if (ext == ".trace" || ext == ".dda" || ext == ".poly" || ext == ".json" || ext == ".obj" || ext == ".off" ||
-          ext == ".ply" || ext == ".stl")
-        here.push_back(e.path().string());
-    }
-    std::sort(here.begin(), here.end());
-    out.insert(out.end(), here.begin(), here.end());
-  }
-  return out;
-}
-
 
 // One `girtd render` in a child process; its report, or null when it failed.
 nlohmann::json render_in_child(const std::string& input, const std::string& backend, const std::string& dir,
@@ -60,8 +44,45 @@ bool same_counts(const nlohmann::json& a, const nlohmann::json& b) {
 
 }  // namespace
 
-PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir) {
+namespace {
+
+// The stored expectations, when they were blessed under this configuration.
+nlohmann::json stored_expectations(const Params& params) {
+  std::ifstream in(kExpectationFile);
+  if (!in) return nullptr;
+  const nlohmann::json file = nlohmann::json::parse(in);
+  return file.at("config_key") == config_key(params) ? file.at("inputs") : nlohmann::json();
+}
+
+// Each back end's report against the stored record: "golden: key: ..." lines.
+std::vector<std::string> differences_from(const nlohmann::json& stored, const std::vector<std::pair<const char*, const nlohmann::json*>>& reports,
+                                          const Params& params) {
+  std::vector<std::string> out;
+  for (const auto& [name, report] : reports)
+    for (const std::string& d : expectation_differences(stored, expectation_of(*report, params)))
+      out.push_back(std::string(name) + ": " + d);
+  return out;
+}
+
+// Blessing a run whose back ends disagree would store one of them as right.
+void bless_expectations(PipelineBench& b, const nlohmann::json& blessed, const Params& params) {
+  if (b.failures) {
+    std::printf("not blessed: %d input(s) disagree between back ends\n", b.failures);
+    return;
+  }
+  const nlohmann::json file = {{"config_key", config_key(params)},
+                               {"about", "girtd bench --pipeline --bless (tools/girtd bless); testbench/README.md"},
+                               {"inputs", blessed}};
+  std::ofstream(kExpectationFile) << file.dump(1) << "\n";
+  std::printf("blessed %zu input(s) into %s\n", blessed.size(), kExpectationFile);
+}
+
+}  // namespace
+
+PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir, bool bless) {
   PipelineBench b;
+  const nlohmann::json stored = stored_expectations(params);
+  nlohmann::json blessed = nlohmann::json::object();
   b.markdown =
       "\n## The SystemC pipeline: approx against rtl (and golden's frame)\n\n"
       "Each render in its own process. Same frame: golden, approx and rtl give the same image SHA-256. Counts: "
@@ -69,10 +90,11 @@ PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config
       "misses, approx against rtl. Time: approx's modeled "
       "time against rtl's in base ticks (must be equal). Coupling: wall ns per simulated 5 ns base tick of "
       "rtl in the pipeline against the Verilated back end driven by a plain C++ loop on the same triangles (triangle "
-      "traces only).\n\n"
-      "| input | pixels | same frame | same counts | rtl modeled ms | approx modeled ms | difference (ticks) | rtl wall s | "
+      "traces only). As blessed: every back end's picture, counts and ticks equal the stored expectations (`"
+      + std::string(kExpectationFile) + "`; `—` under another configuration).\n\n"
+      "| input | pixels | same frame | same counts | as blessed | rtl modeled ms | approx modeled ms | difference (ticks) | rtl wall s | "
       "approx wall s | speed-up | rtl DDA clocks per wall s | rtl wall ns/tick | bare wall ns/tick | coupling cost |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   const bool as_written = !params.had_write_behind && !params.had_prefetch && !params.had_dirty_bits &&
                           params.vram_steal_every_ns == 0;
   if (!as_written) {
@@ -80,7 +102,7 @@ PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config
                   "options)\n";
     return b;
   }
-  for (const std::string& input : sample_inputs()) {
+  for (const std::string& input : sample_workloads()) {
     const std::string stem = fs::path(input).parent_path().filename().string() + "_" + fs::path(input).filename().string();
     const nlohmann::json g = render_in_child(input, "golden", out_dir + "/pipeline/" + stem + "/golden", config);
     const nlohmann::json a = render_in_child(input, "approx", out_dir + "/pipeline/" + stem + "/approx", config);
@@ -111,23 +133,33 @@ PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config
       const TimingComparison c = compare_timing(params, input);
       if (c.rtl.ticks > 0) bare = c.rtl_wall_s / double(c.rtl.ticks) * 1e9;
     }
+    std::string as_blessed = "—";
+    if (bless) blessed[input] = expectation_of(r, params);
+    if (stored.is_object() && !stored.contains(input)) as_blessed = "new";
+    if (stored.is_object() && stored.contains(input)) {
+      const std::vector<std::string> diffs = differences_from(stored.at(input), {{"golden", &g}, {"approx", &a}, {"rtl", &r}}, params);
+      as_blessed = diffs.empty() ? "yes" : "NO";
+      for (const std::string& d : diffs) std::printf("%s: %s%s\n", input.c_str(), bless ? "blessing " : "", d.c_str());
+      if (!diffs.empty() && !bless) ++b.failures;
+    }
     if (!same_frame || !counts || !time_ok) ++b.failures;
     b.rows.push_back({{"input", input}, {"pixels", pixels}, {"same_frame", same_frame}, {"same_counts", counts},
                       {"rtl_modeled_s", rt}, {"approx_modeled_s", at}, {"time_difference", diff},
-                      {"time_difference_ticks", diff_ticks}, {"rtl_wall_s", rw}, {"approx_wall_s", aw},
+                      {"time_difference_ticks", diff_ticks}, {"as_blessed", as_blessed}, {"rtl_wall_s", rw}, {"approx_wall_s", aw},
                       {"rtl_dda_clocks_per_wall_s", clocks_per_s}, {"rtl_wall_ns_per_tick", rtl_ns_per_tick},
                       {"bare_rtl_wall_ns_per_tick", bare > 0 ? nlohmann::json(bare) : nlohmann::json(nullptr)}});
     char bare_cells[64] = "— | —";
     if (bare > 0) std::snprintf(bare_cells, sizeof bare_cells, "%.1f | %+.1f %%", bare, 100 * (rtl_ns_per_tick - bare) / bare);
     char line[768];
-    std::snprintf(line, sizeof line, "| %s | %llu | %s | %s | %.4f | %.4f | %+lld%s | %.3f | %.3f | %.1fx | %.2e | %.1f | %s |\n",
+    std::snprintf(line, sizeof line, "| %s | %llu | %s | %s | %s | %.4f | %.4f | %+lld%s | %.3f | %.3f | %.1fx | %.2e | %.1f | %s |\n",
                   input.c_str(), static_cast<unsigned long long>(pixels), same_frame ? "yes" : "NO", counts ? "yes" : "NO",
-                  rt * 1e3, at * 1e3, diff_ticks, time_ok ? "" : " (NOT EQUAL)", rw, aw, aw > 0 ? rw / aw : 0.0,
+                  as_blessed.c_str(), rt * 1e3, at * 1e3, diff_ticks, time_ok ? "" : " (NOT EQUAL)", rw, aw, aw > 0 ? rw / aw : 0.0,
                   clocks_per_s, rtl_ns_per_tick, bare_cells);
     b.markdown += line;
     std::fputs(line, stdout);
     std::fflush(stdout);
   }
+  if (bless) bless_expectations(b, blessed, params);
   return b;
 }
 

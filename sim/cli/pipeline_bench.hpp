@@ -24,8 +24,12 @@ struct PipelineBench {
   int failures = 0;
 };
 
-// `config`: the --config files passed on to every render.
-PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir);
+// `config`: the --config files passed on to every render. Compares every
+// render with the stored expectations (cli/expectations.hpp) blessed under
+// the same configuration; `bless` rewrites them instead (not when back ends
+// disagree).
+PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir,
+                                 bool bless = false);
 
 // The cost of the coupling and of the waveform ability, on the demo trace:
 // rtl in the pipeline, the bare Verilated harness, the pipeline keeping step

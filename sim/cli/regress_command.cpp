@@ -7,13 +7,14 @@
 #include "cli/config_loader.hpp"
 #include "rtl/backend_rtl.hpp"
 #include "rtl/dda_regression.hpp"
+#include "io/workloads.hpp"
 
 namespace girtd {
 
 int run_regress(const RegressArgs& a) {
   Params p = load_params(a.config);
   std::vector<std::string> traces = a.traces;
-  if (traces.empty() && a.random == 0) traces = traces_under("traces");
+  if (traces.empty() && a.random == 0) traces = sample_traces_at({TraceLevel::kTriangle, TraceLevel::kDda});
   int passed = 0, failed = 0;
   auto report = [&](const RegressionRow& r) {
     if (passed + failed == 0)  // the header once the RTL has been set up without complaint

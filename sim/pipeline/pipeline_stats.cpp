@@ -37,6 +37,8 @@ void PipelineElaboration::collect(RunStats& s) const {
     st.stall_s = a->starved_s + a->blocked_s;
     st.flops = a->flops;
     st.fifo_in_max = in_fifo_.at(a.get())->max_occupancy;
+    st.frame_begin_s = a->frame_begin_s;
+    st.frame_end_s = a->frame_end_s;
     s.stages.push_back(st);
   }
   const double clock_s = p_.dda_clock_ns * 1e-9;

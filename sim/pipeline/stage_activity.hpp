@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace girtd {
 
@@ -28,6 +29,9 @@ struct StageActivity {
   double busy_s = 0;     // computing
   double starved_s = 0;  // waiting for an item (from time 0: the pipeline's fill counts)
   double blocked_s = 0;  // waiting for room in the next FIFO
+  // Modeled time the stage took each frame's begin marker in and handed its
+  // end marker on: frames overlap where one's begin precedes another's end.
+  std::vector<double> frame_begin_s, frame_end_s;
 };
 
 }  // namespace girtd

@@ -61,6 +61,7 @@ class TimedStage : public sc_core::sc_module {
           perform(tok.frame);
           break;
         case TokenKind::kFrameBegin:
+          a_.frame_begin_s.push_back(sc_core::sc_time_stamp().to_seconds());
           if (on_begin_) on_begin_(tok.frame, work_);
           write(Token<Out>{TokenKind::kFrameBegin, tok.frame, {}});
           perform(tok.frame);
@@ -69,6 +70,7 @@ class TimedStage : public sc_core::sc_module {
           if (on_end_) on_end_(tok.frame, work_);
           perform(tok.frame);
           write(Token<Out>{TokenKind::kFrameEnd, tok.frame, {}});
+          a_.frame_end_s.push_back(sc_core::sc_time_stamp().to_seconds());
           break;
         case TokenKind::kEnd:
           write(Token<Out>{TokenKind::kEnd, tok.frame, {}});

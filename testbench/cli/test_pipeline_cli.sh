@@ -35,6 +35,7 @@ for k in modeled_time_s modeled_mpixels_per_s back_end_mpixels_per_s bottleneck 
   jq -e ".$k != null" "$r" >/dev/null && ok || bad "report lacks $k"
 done
 jq -e '.not_modeled == []' "$r" >/dev/null && ok || bad "approx leaves keys unmodeled"
+check_registry "$r"
 jq -e '.stage_order == ["lighting","view","depth_clip","projection","triangulator","window_clip","depth_sort","preparer","dda","had"]' \
   "$r" >/dev/null && ok || bad "stage order: $(jq -c .stage_order "$r")"
 jq -e '(.modeled_mpixels_per_s - .pixels_generated / .modeled_time_s / 1e6 | fabs) < 1e-6' "$r" >/dev/null \
@@ -68,6 +69,7 @@ script -qec "'$GIRTD' render traces/scenes/demo.json --backend rtl --out '$TMP/w
 [[ -s "$TMP/win/report.json" ]] && ok || bad "render on a terminal"
 grep -qE "\[girtd\] rtl: frame 1/1, [0-9]+/[0-9]+ triangles" "$TMP/tty" && ok || bad "no progress line: $(tail -c 300 "$TMP/tty")"
 "$GIRTD" render traces/scenes/window.json --backend rtl --out "$TMP/win2" --quiet 2> "$TMP/err" && ok || bad "rtl render"
+check_registry "$TMP/win2/report.json"
 [[ ! -s "$TMP/err" ]] && ok || bad "stderr not empty without a terminal: $(head -c 200 "$TMP/err")"
 
 # approx is rtl's timing to the tick, also where the frame clear is no whole

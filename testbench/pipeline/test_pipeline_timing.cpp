@@ -159,8 +159,14 @@ TEST_CASE("the timed front end, stages working on different frames at once, give
   CHECK(got.stats.frames == polygons.frames.size());
   REQUIRE(got.per_frame.size() == want.per_frame.size());
   for (size_t i = 0; i < want.per_frame.size(); ++i) CHECK(got.per_frame[i].rgb == want.per_frame[i].rgb);
-  // Lighting starts the second frame while the frame-long stages still hold the first.
-  CHECK(got.stats.timing->modeled_s > 0);
+  // Lighting starts the second frame while the frame-long stages still hold
+  // the first: it begins frame 1 before the depth sort has handed frame 0 on.
+  const StageStats& lighting = stage(got.stats, "lighting");
+  const StageStats& sort = stage(got.stats, "depth_sort");
+  REQUIRE(lighting.frame_begin_s.size() == polygons.frames.size());
+  REQUIRE(sort.frame_end_s.size() == polygons.frames.size());
+  CHECK(lighting.frame_begin_s[1] < sort.frame_end_s[0]);
+  CHECK(lighting.frame_begin_s[0] == 0.0);
 }
 
 }  // namespace girtd

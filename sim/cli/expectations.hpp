@@ -1,0 +1,32 @@
+// Stored expectations (testbench/golden/expectations.json): per sample
+// workload, the picture's SHA-256, the triangle and pixel counts, DDA clocks
+// per state, page misses and modeled base ticks the design as blessed
+// produces. `bench --pipeline` compares every back end's report with them;
+// `bench --pipeline --bless` (tools/girtd bless) rewrites them after an
+// intended change and prints what changed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "config/params.hpp"
+
+namespace girtd {
+
+constexpr const char* kExpectationFile = "testbench/golden/expectations.json";
+
+// The fields of a report that are stored; a back end's `null` (golden's
+// modeled time) stays null and is not compared.
+nlohmann::json expectation_of(const nlohmann::json& report, const Params& params);
+
+// "key: expected X, got Y" for every stored field `got` has and differs in.
+std::vector<std::string> expectation_differences(const nlohmann::json& expected, const nlohmann::json& got);
+
+// A configuration's identity: the first 16 hex digits of the SHA-256 of the
+// merged configuration. Expectations are compared only under the
+// configuration they were blessed with.
+std::string config_key(const Params& params);
+
+}  // namespace girtd

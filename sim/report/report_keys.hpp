@@ -1,0 +1,69 @@
+// The registry of report.json's keys: each key is declared once here, with
+// its unit, its meaning, which back ends know it and how its value is read
+// from a run. report.json, report.md's key table, `not_modeled` and the key
+// table in sim/README.md (girtd_report_keys) all come from it.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "backends/run_stats.hpp"
+#include "config/params.hpp"
+
+namespace girtd {
+
+// What a render knows besides its RunStats.
+struct ReportContext {
+  std::string backend;
+  std::string input;
+  std::string level;
+  std::string image_sha256;
+  std::vector<std::string> warnings;  // input the run went on from ("FILE: what")
+  std::string rtl_build;              // the rtl back end's RTL build key; "" for the others
+};
+
+struct ReportSource {
+  const ReportContext& ctx;
+  const RunStats& s;
+  const Params& params;
+};
+
+// Which back ends can know a key; the others report it as null and list it
+// in not_modeled.
+enum KnownBy : unsigned {
+  kReference = 1,
+  kGolden = 2,
+  kApprox = 4,
+  kRtl = 8,
+  kTimed = kApprox | kRtl,
+  kHardware = kGolden | kTimed,  // the back ends that run the DDA
+  kEvery = kReference | kHardware,
+};
+unsigned known_by_bit(const std::string& backend);
+
+struct ReportKey {
+  std::string path;  // dotted; "stages.*.busy_s" for a key of every stage
+  std::string unit;
+  std::string meaning;
+  unsigned known_by = kEvery;
+  bool summary = false;  // a row of report.md's key table
+  // The value (null when this input has none, e.g. no front end ran); a
+  // key of every stage reads the stage instead.
+  std::function<nlohmann::json(const ReportSource&)> value;
+  std::function<nlohmann::json(const ReportSource&, const StageStats&)> stage_value;
+};
+
+// Every key, in report order.
+const std::vector<ReportKey>& report_keys();
+
+// The registered keys this back end cannot know.
+std::vector<std::string> not_modeled_keys(const std::string& backend);
+
+// sim/README.md's key table (girtd_report_keys prints it).
+std::string report_keys_markdown();
+
+}  // namespace girtd
