@@ -51,11 +51,14 @@ ImageError compare(const RgbImage& a, const RgbImage& b) {
 
 }  // namespace
 
-int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool bless) {
+int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool bless,
+              const std::vector<std::string>& inputs) {
   const Params params = load_params(config);
   if (bless && !pipeline_only) throw InputError("--bless", 0, "blessing runs the pipeline table: add --pipeline");
+  if (!inputs.empty() && !pipeline_only) throw InputError(inputs[0], 0, "inputs are for the pipeline table: add --pipeline");
+  if (bless && !inputs.empty()) throw InputError("--bless", 0, "blessing stores every sample workload: name no inputs");
   if (pipeline_only) {
-    const PipelineBench pb = run_pipeline_bench(params, config, out_dir, bless);
+    const PipelineBench pb = run_pipeline_bench(params, config, out_dir, bless, inputs);
     OutputSet files(out_dir);
     files.add_text("pipeline.json", nlohmann::json{{"rows", pb.rows}, {"config", params.source}}.dump(2) + "\n");
     files.add_text("pipeline.md", "# girtd bench --pipeline\n" + pb.markdown);

@@ -50,6 +50,9 @@ int main(int argc, char** argv) {
   bench->add_flag("--pipeline", bench_pipeline,
                   "only the SystemC pipeline's table (approx against rtl, every back end against the stored "
                   "expectations); exit 1 on a disagreement");
+  std::vector<std::string> bench_inputs;
+  bench->add_option("inputs", bench_inputs, "with --pipeline: these inputs only (default: traces/workloads.txt)")
+      ->check(CLI::ExistingFile);
   bool bench_bless = false;
   bench->add_flag("--bless", bench_bless, "with --pipeline: rewrite testbench/golden/expectations.json from this run");
 
@@ -82,7 +85,7 @@ int main(int argc, char** argv) {
     if (drives_rtl) run_in_rtl_variant_if_needed(load_params(config), argv);
     if (*render) return run_render(ra);
     if (*claims) return run_claims(claims_config);
-    if (*bench) return run_bench(bench_config, bench_out, bench_pipeline, bench_bless);
+    if (*bench) return run_bench(bench_config, bench_out, bench_pipeline, bench_bless, bench_inputs);
     if (*regress) return run_regress(rg);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.formatted().c_str());

@@ -79,7 +79,8 @@ void bless_expectations(PipelineBench& b, const nlohmann::json& blessed, const P
 
 }  // namespace
 
-PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir, bool bless) {
+PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir, bool bless,
+                                 const std::vector<std::string>& inputs) {
   PipelineBench b;
   const nlohmann::json stored = stored_expectations(params);
   nlohmann::json blessed = nlohmann::json::object();
@@ -102,7 +103,7 @@ PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config
                   "options)\n";
     return b;
   }
-  for (const std::string& input : sample_workloads()) {
+  for (const std::string& input : inputs.empty() ? sample_workloads() : inputs) {
     const std::string stem = fs::path(input).parent_path().filename().string() + "_" + fs::path(input).filename().string();
     const nlohmann::json g = render_in_child(input, "golden", out_dir + "/pipeline/" + stem + "/golden", config);
     const nlohmann::json a = render_in_child(input, "approx", out_dir + "/pipeline/" + stem + "/approx", config);

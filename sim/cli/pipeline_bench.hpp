@@ -10,6 +10,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -29,7 +30,7 @@ struct PipelineBench {
 // the same configuration; `bless` rewrites them instead (not when back ends
 // disagree).
 PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir,
-                                 bool bless = false);
+                                 bool bless = false, const std::vector<std::string>& inputs = {});
 
 // The cost of the coupling and of the waveform ability, on the demo trace:
 // rtl in the pipeline, the bare Verilated harness, the pipeline keeping step
