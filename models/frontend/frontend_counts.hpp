@@ -1,5 +1,5 @@
 // What the front end counted, summed over the frames of a run
-// (report.json `frontend`, keys in sim/README.md).
+// (report.json `frontend`; keys declared in sim/report/report_keys.cpp).
 #pragma once
 
 #include <cstdint>

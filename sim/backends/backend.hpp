@@ -2,6 +2,7 @@
 // --backend picks one; the render session around it is shared.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,6 +24,12 @@ class Backend {
   virtual void draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) = 0;
   // Per-stage rows for the report, after the last frame.
   virtual void finish(RunStats& stats) const = 0;
+  // --dump dda: hands every DDA parameter set the back end draws to `tap`;
+  // false for a back end without a DDA.
+  virtual bool tap_dda(std::function<void(const DdaParams&)> tap) {
+    (void)tap;
+    return false;
+  }
 };
 
 // "reference", "golden"; asking for a back end that is not built yet

@@ -1,6 +1,7 @@
 // --dump LEVEL=FILE: writes the stream crossing one stage boundary, frame by
-// frame, in the trace format (replayable). Checks the request when made; the
-// file appears only on commit().
+// frame, in the trace format (replayable). The back end hands the tap what
+// crossed the boundary as it crosses (nothing is computed again for it).
+// Checks the request when made; the file appears only on commit().
 #pragma once
 
 #include <memory>
@@ -8,7 +9,6 @@
 
 #include "common/input_error.hpp"
 #include "config/params.hpp"
-#include "dda/dda_preparer.hpp"
 #include "io/trace.hpp"
 #include "io/trace_writer.hpp"
 
@@ -21,40 +21,34 @@ struct DumpRequest {
 
 class DumpTap {
  public:
-  DumpTap(const DumpRequest& req, const Trace& trace, const Params& params, const Trace* polygons)
-      : level_(req.level), preparer_(params), polygons_(polygons) {
-    if (trace.level == TraceLevel::kThesis)
+  // `input`: the render's input (a polygon-level trace for models and scenes).
+  DumpTap(const DumpRequest& req, const Trace& input, const Params& params) : level_(req.level) {
+    if (input.level == TraceLevel::kThesis)
       throw InputError(req.path, 0, "a thesis trace runs the appendix program whole: it has no stage boundary to dump");
-    if (trace.level == TraceLevel::kDda && level_ == TraceLevel::kTriangle)
+    if (input.level == TraceLevel::kDda && level_ == TraceLevel::kTriangle)
       throw InputError(req.path, 0, "cannot dump triangles from a DDA-level trace (the preparer's input is gone)");
-    if (level_ == TraceLevel::kPolygon && !polygons_)
+    if (level_ == TraceLevel::kPolygon && input.level != TraceLevel::kPolygon)
       throw InputError(req.path, 0, "cannot dump polygons: the input entered below the front end");
-    writer_ = std::make_unique<TraceWriter>(req.path, level_, params, "dumped by girtd render from " + trace.path);
+    writer_ = std::make_unique<TraceWriter>(req.path, level_, params, "dumped by girtd render from " + input.path);
   }
+  TraceLevel level() const { return level_; }
+  void begin_frame(const FrameSettings& s) { writer_->begin_frame(s); }
+  template <typename Item>
+  void write(const Item& item) {
+    writer_->write(item);
+  }
+  // A whole frame of an input trace (the stream that entered at `level`).
   void frame(const TraceFrame& f) {
-    writer_->begin_frame(f.settings);
-    if (level_ == TraceLevel::kPolygon) {
-      writer_->write(polygons_->frames.at(polygon_frame_++).world);
-      return;
-    }
-    if (level_ == TraceLevel::kTriangle) {
-      for (const Triangle& t : f.triangles) writer_->write(t);
-      return;
-    }
-    for (const DdaParams& d : f.dda) writer_->write(d);
-    DdaParams p;
-    for (const Triangle& t : f.triangles)
-      if (preparer_.prepare(t, f.settings, p) == PrepareResult::kReady) writer_->write(p);
+    begin_frame(f.settings);
+    if (level_ == TraceLevel::kPolygon) write(f.world);
+    for (const Triangle& t : f.triangles) write(t);
+    for (const DdaParams& d : f.dda) write(d);
   }
   void commit() { writer_->commit(); }
 
  private:
   TraceLevel level_;
-  DdaPreparer preparer_;
   std::unique_ptr<TraceWriter> writer_;
-  const Trace* polygons_;
-  size_t polygon_frame_ = 0;
 };
-
 
 }  // namespace girtd

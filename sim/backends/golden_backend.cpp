@@ -34,7 +34,10 @@ void traverse(const Sequencer& seq, const DdaParams& p, Had& had, RunStats& stat
 
 }  // namespace
 
-void GoldenBackend::run_dda(const DdaParams& p, Had& had, RunStats& stats) { traverse(engine_, p, had, stats); }
+void GoldenBackend::run_dda(const DdaParams& p, Had& had, RunStats& stats) {
+  if (tap_) tap_(p);
+  traverse(engine_, p, had, stats);
+}
 
 // The thesis appendix's program: prepdda and DDApix in its own formats.
 void GoldenBackend::run_thesis(const Triangle& t, Had& had, RunStats& stats) {

@@ -18,6 +18,10 @@ class GoldenBackend : public Backend {
   void begin(const Trace& trace) override;
   void draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) override;
   void finish(RunStats& stats) const override;
+  bool tap_dda(std::function<void(const DdaParams&)> tap) override {
+    tap_ = std::move(tap);
+    return true;
+  }
 
  private:
   void run_dda(const DdaParams& p, Had& had, RunStats& stats);
@@ -27,6 +31,7 @@ class GoldenBackend : public Backend {
   Params thesis_params_;  // the appendix program's register formats
   bool thesis_mode_ = false;
   DdaPix ddapix_;
+  std::function<void(const DdaParams&)> tap_;  // --dump dda
 };
 
 // Adds one triangle's DDA statistics into a running total.

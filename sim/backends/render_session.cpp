@@ -20,8 +20,14 @@ RgbImage shown_image(const FrameBuffer& fb) {
 
 RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& params, const RenderOptions& opt) {
   backend.begin(trace);
+  // --dump: the input as it came, the front end's triangles as drawn, or the
+  // DDA parameter sets as the back end draws them.
+  const Trace& input = opt.polygon_source ? *opt.polygon_source : trace;
   std::unique_ptr<DumpTap> tap;
-  if (opt.dump) tap = std::make_unique<DumpTap>(*opt.dump, trace, params, opt.polygon_source);
+  if (opt.dump) tap = std::make_unique<DumpTap>(*opt.dump, input, params);
+  const bool dda_tap = tap && tap->level() == TraceLevel::kDda;
+  if (dda_tap && !backend.tap_dda([&tap](const DdaParams& d) { tap->write(d); }))
+    throw InputError(opt.dump->path, 0, "the " + backend.name() + " back end has no DDA: dump dda from golden, approx or rtl");
 
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
@@ -34,7 +40,8 @@ RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& pa
   bool printed = false;
   for (size_t i = 0; i < n_frames; ++i) {
     const TraceFrame& f = trace.frames[i];
-    if (tap) tap->frame(f);
+    if (dda_tap) tap->begin_frame(f.settings);
+    else if (tap) tap->frame(tap->level() == TraceLevel::kPolygon ? input.frames[i] : f);
     fb.clear_back(f.settings.background);
     had.set_drop_partial(f.settings.qq);
     backend.draw_frame(f, had, out.stats);

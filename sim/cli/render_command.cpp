@@ -17,7 +17,7 @@
 #include "report/report.hpp"
 #include "io/sha256.hpp"
 #include "io/trace_reader.hpp"
-#include "frontend/front_end_runner.hpp"
+#include "backends/front_end_runner.hpp"
 #include "io/model_import.hpp"
 #include "io/scene_reader.hpp"
 
@@ -48,7 +48,9 @@ struct LoadedInput {
   std::optional<FrontendCounts> frontend;
 };
 
-LoadedInput load_input(const RenderArgs& a, const Params& params) {
+// `untimed`: golden and reference draw triangles, so the front end runs here;
+// the timed back ends run it as their own stages.
+LoadedInput load_input(const RenderArgs& a, const Params& params, bool untimed) {
   if (!fs::exists(a.input)) throw InputError(a.input, 0, "no such file");
   std::optional<TraceLevel> level;
   if (!a.level.empty()) level = parse_level(a.level, "--level", 0);
@@ -74,7 +76,7 @@ LoadedInput load_input(const RenderArgs& a, const Params& params) {
       for (DdaParams& d : f.dda) d.q = *a.aa;
     }
   }
-  if (in.polygons) {
+  if (in.polygons && untimed) {
     FrontEndRun run = run_front_end(*in.polygons, params);
     in.trace = std::move(run.triangles);
     in.frontend = run.counts;
@@ -135,7 +137,7 @@ int run_render(const RenderArgs& a) {
   const std::string dir = a.out_dir.empty() ? "out/" + fs::path(a.input).stem().string() : a.out_dir;
   check_output_dir(dir, "--out");
   if (wave) check_output_dir(fs::path(wave->path).parent_path().string(), "--wave");
-  const LoadedInput input = load_input(a, params);
+  const LoadedInput input = load_input(a, params, !pipelined);
   const Trace& trace = input.trace;
   const std::vector<std::string>& warnings = input.polygons ? input.polygons->warnings : trace.warnings;
   for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -148,7 +150,7 @@ int run_render(const RenderArgs& a) {
   opt.wave = wave;
   RenderOutput out;
   if (pipelined) {
-    out = run_pipeline(a.backend, trace, input.polygons ? &*input.polygons : nullptr, params, opt);
+    out = run_pipeline(a.backend, input.polygons ? *input.polygons : trace, params, opt);
   } else {
     out = render_trace(trace, *backend, params, opt);
     out.stats.frontend = input.frontend;
@@ -165,6 +167,7 @@ int run_render(const RenderArgs& a) {
   ctx.image_sha256 = sha256_hex(out.shown.rgb);
   ctx.warnings = warnings;
   if (ctx.backend == "rtl") ctx.rtl_build = built_rtl_key();
+  ctx.front_end_passes = front_end_passes();
   const nlohmann::json report = make_report(ctx, out.stats, params);
 
   OutputSet files(dir);

@@ -2,6 +2,7 @@
 // the whole front end, triangles start at the window clip, DDA parameter
 // sets go straight to the back end. Each stage calls its models/ function
 // and charges its flops (models/timing/stage_costs).
+#include "backends/front_end_runner.hpp"
 #include "common/triangle_setup.hpp"
 #include "pipeline/pipeline_elaboration.hpp"
 #include "timing/stage_costs.hpp"
@@ -9,6 +10,7 @@
 namespace girtd {
 
 void PipelineElaboration::build_from_polygons(const Trace& polygons) {
+  count_front_end_pass();
   polygon_source_ = &polygons;
   for (const TraceFrame& f : polygons.frames) {
     polygon_ids_.emplace_back();
@@ -128,11 +130,18 @@ void PipelineElaboration::build_from_dda(const Trace& trace) {
 
 sc_core::sc_fifo<Token<DdaParams>>& PipelineElaboration::preparer(sc_fifo<Token<Triangle>>& in) {
   preparer_ = std::make_unique<DdaPreparer>(p_);
-  return stage<Triangle, DdaParams>("preparer", in, [this](size_t frame, const Triangle& t, Work<DdaParams>& w) {
-    std::optional<DdaParams> d(std::in_place);
-    if (preparer_->prepare(t, settings_[frame], *d) != PrepareResult::kReady) d.reset();
-    w.push_back({preparer_ops().flops(), std::move(d)});
-  });
+  return stage<Triangle, DdaParams>(
+      "preparer", in,
+      [this](size_t frame, const Triangle& t, Work<DdaParams>& w) {
+        std::optional<DdaParams> d(std::in_place);
+        if (preparer_->prepare(t, settings_[frame], *d) != PrepareResult::kReady) d.reset();
+        if (tap_ && tap_->level() == TraceLevel::kTriangle) tap_->write(t);
+        if (tap_ && tap_->level() == TraceLevel::kDda && d) tap_->write(*d);
+        w.push_back({preparer_ops().flops(), std::move(d)});
+      },
+      [this](size_t frame, Work<DdaParams>&) {
+        if (tap_) tap_->begin_frame(settings_[frame]);
+      });
 }
 
 }  // namespace girtd

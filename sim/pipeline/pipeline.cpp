@@ -37,15 +37,21 @@ void check_pipeline_input(const Trace& trace) {
 
 }  // namespace
 
-PipelineElaboration::PipelineElaboration(const std::string& backend, const Trace& trace, const Trace* polygons, const Params& p,
-         const RenderOptions& opt)
+PipelineElaboration::PipelineElaboration(const std::string& backend, const Trace& input, const Params& p,
+                                         const RenderOptions& opt, DumpTap* tap)
     : p_(p), opt_(opt), engine_(make_back_end_engine(backend, p, opt.wave.has_value())), backend_(backend) {
-  const Trace& in = polygons ? *polygons : trace;
-  for (const TraceFrame& f : in.frames) settings_.push_back(f.settings);
-  for (const TraceFrame& f : trace.frames) total_items_ += f.triangles.size() + f.dda.size();  // for the progress line
-  if (polygons) build_from_polygons(*polygons);
-  else if (trace.level == TraceLevel::kTriangle) build_from_triangles(trace);
-  else build_from_dda(trace);
+  for (const TraceFrame& f : input.frames) settings_.push_back(f.settings);
+  // The stream that entered is dumped as it is; one made inside, by the
+  // preparer stage as it crosses (front_end_modules.cpp).
+  if (tap && tap->level() == input.level)
+    for (const TraceFrame& f : input.frames) tap->frame(f);
+  else
+    tap_ = tap;
+  for (const TraceFrame& f : input.frames)  // for the progress line
+    total_items_ += f.triangles.size() + f.dda.size() + f.world.polygons.size();
+  if (input.level == TraceLevel::kPolygon) build_from_polygons(input);
+  else if (input.level == TraceLevel::kTriangle) build_from_triangles(input);
+  else build_from_dda(input);
 }
 
 RenderOutput PipelineElaboration::run() {
@@ -83,10 +89,16 @@ void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
     progress = [this](size_t frame, uint64_t triangles, double modeled_s) {
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
       if (wall < 1.0) return;
-      std::fprintf(stderr, "\r[girtd] %s: frame %zu/%zu, %llu/%llu triangles (%.0f %%), %.3f ms modeled, %.1f s wall ",
-                   backend_.c_str(), frame + 1, settings_.size(), static_cast<unsigned long long>(triangles),
-                   static_cast<unsigned long long>(total_items_),
-                   total_items_ ? 100.0 * double(triangles) / double(total_items_) : 0.0, modeled_s * 1e3, wall);
+      // Polygon input: the triangle count is known only as the front end
+      // makes them, so the share done is of the polygons lit.
+      const bool polygons = polygon_source_ != nullptr;
+      const uint64_t done = polygons ? activities_.front()->items : triangles;
+      char drawn[48] = "";
+      if (polygons) std::snprintf(drawn, sizeof drawn, ", %llu triangles drawn", static_cast<unsigned long long>(triangles));
+      std::fprintf(stderr, "\r[girtd] %s: frame %zu/%zu, %llu/%llu %s (%.0f %%)%s, %.3f ms modeled, %.1f s wall ",
+                   backend_.c_str(), frame + 1, settings_.size(), static_cast<unsigned long long>(done),
+                   static_cast<unsigned long long>(total_items_), polygons ? "polygons lit" : "triangles",
+                   total_items_ ? 100.0 * double(done) / double(total_items_) : 0.0, drawn, modeled_s * 1e3, wall);
       progress_printed_ = true;
     };
   back_end_ = std::make_unique<BackEndStage>("back_end", *engine_, settings_, p_.base_tick_ns, a, in_record,
@@ -106,12 +118,11 @@ void PipelineElaboration::start_wave(const WaveOptions& w) {
   back_end_->record(wave_.get());
 }
 
-RenderOutput run_pipeline(const std::string& backend, const Trace& trace, const Trace* polygons, const Params& p,
-                          const RenderOptions& opt) {
+RenderOutput run_pipeline(const std::string& backend, const Trace& input, const Params& p, const RenderOptions& opt) {
   static bool elaborated = false;
   if (elaborated) throw std::logic_error("SystemC elaborates once per process: one pipeline run per process");
   elaborated = true;
-  check_pipeline_input(polygons ? *polygons : trace);
+  check_pipeline_input(input);
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   if (opt.wave) {
     if (backend == "rtl") check_rtl_wave_scopes(opt.wave->scopes, p);  // before the run's own RTL exists
@@ -120,14 +131,11 @@ RenderOutput run_pipeline(const std::string& backend, const Trace& trace, const 
         if (s != "pipeline" && s.rfind("pipeline.", 0) != 0)
           throw InputError("--wave-scope", 0, "'" + s + "': approx records the SystemC side alone (pipeline...)");
   }
-  std::unique_ptr<DumpTap> tap;  // checked before the run, written after it
-  if (opt.dump) tap = std::make_unique<DumpTap>(*opt.dump, trace, p, opt.polygon_source);
-  PipelineElaboration pipeline(backend, trace, polygons, p, opt);
+  std::unique_ptr<DumpTap> tap;  // checked before the run, committed after it
+  if (opt.dump) tap = std::make_unique<DumpTap>(*opt.dump, input, p);
+  PipelineElaboration pipeline(backend, input, p, opt, tap.get());
   RenderOutput out = pipeline.run();
-  if (tap) {
-    for (const TraceFrame& f : trace.frames) tap->frame(f);
-    tap->commit();
-  }
+  if (tap) tap->commit();
   return out;
 }
 

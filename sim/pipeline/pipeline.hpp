@@ -15,10 +15,8 @@ namespace girtd {
 
 bool is_pipeline_backend(const std::string& name);  // "approx", "rtl"
 
-// `trace`: the triangle- or DDA-level trace; `polygons`: the polygon-level
-// trace it was made from, when there is one (the pipeline then runs the
-// front end itself; `trace` is only used for --dump).
-RenderOutput run_pipeline(const std::string& backend, const Trace& trace, const Trace* polygons, const Params& p,
-                          const RenderOptions& opt);
+// `input`: a polygon-level trace (models, scenes; the pipeline runs the
+// front end itself), a triangle- or a DDA-level one.
+RenderOutput run_pipeline(const std::string& backend, const Trace& input, const Params& p, const RenderOptions& opt);
 
 }  // namespace girtd

@@ -28,8 +28,9 @@ using sc_core::sc_fifo;
 
 class PipelineElaboration {
  public:
-  PipelineElaboration(const std::string& backend, const Trace& trace, const Trace* polygons, const Params& p,
-                      const RenderOptions& opt);
+  // `tap`: --dump's, or nullptr.
+  PipelineElaboration(const std::string& backend, const Trace& input, const Params& p, const RenderOptions& opt,
+                      DumpTap* tap);
 
   RenderOutput run();
 
@@ -133,6 +134,7 @@ class PipelineElaboration {
   bool progress_printed_ = false;
   std::unique_ptr<WaveRecorder> wave_;
   uint64_t total_items_ = 0;
+  DumpTap* tap_ = nullptr;  // a stream made inside the pipeline (the preparer's input or output)
 };
 
 }  // namespace girtd

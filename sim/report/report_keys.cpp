@@ -196,6 +196,11 @@ std::vector<ReportKey> make_keys() {
       frontend_key("triangles_out", "to the preparer", &FrontendCounts::triangles_out),
       frontend_key("depth_sort_comparisons", "comparisons the depth sort made", &FrontendCounts::depth_sort_comparisons),
       frontend_key("full_sorts", "frames sorted from scratch", &FrontendCounts::full_sorts),
+      key("front_end_passes", "count",
+          "times the front end ran over the input in this render: 1 for models, scenes and polygon traces on every "
+          "back end (golden and reference run it before drawing, approx and rtl as their pipeline's stages; "
+          "`--dump` and the progress line take what that one run made), 0 for triangle and DDA traces",
+          kEvery, [](auto& r) { return json(r.ctx.front_end_passes); }),
       key("wall_s", "s", "host wall time of the render (the back end; the front end runs before it on golden and "
           "reference, inside it on approx and rtl)", kEvery, [](auto& r) { return json(r.s.wall_s); }, true),
       key("image_sha256", "hex", "SHA-256 of the displayed buffer's raw 1024 x 1024 x 3 RGB bytes", kEvery,

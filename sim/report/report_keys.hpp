@@ -24,6 +24,7 @@ struct ReportContext {
   std::string image_sha256;
   std::vector<std::string> warnings;  // input the run went on from ("FILE: what")
   std::string rtl_build;              // the rtl back end's RTL build key; "" for the others
+  uint64_t front_end_passes = 0;      // runs of the front end over the input (backends/front_end_runner.hpp)
 };
 
 struct ReportSource {

@@ -25,6 +25,11 @@ done
 [[ "$(jq -c .frontend "$TMP/star_golden/report.json")" == "$(jq -c .frontend "$TMP/star_approx/report.json")" ]] \
   && ok || bad "front-end counts differ between golden and approx"
 [[ "$(sha "$TMP/star_golden")" == "$(sha "$TMP/star_approx")" ]] && ok || bad "star: approx frame differs"
+# The front end runs once per render, on either kind of back end.
+for b in golden approx; do
+  jq -e '.front_end_passes == 1' "$TMP/star_$b/report.json" >/dev/null && ok \
+    || bad "star on $b ran the front end $(jq .front_end_passes "$TMP/star_$b/report.json") times"
+done
 
 # 3. The throughput keys: present, non-null, consistent.
 r="$TMP/star_approx/report.json"
@@ -61,13 +66,20 @@ printf '{"had": {"write_behind": true}}\n' > "$TMP/wb.json"
 "$GIRTD" render traces/z_overlap.trace --backend golden --out "$TMP/zg" --dump "dda=$TMP/zg.dda" --quiet && ok || bad "dump golden"
 "$GIRTD" render traces/z_overlap.trace --backend approx --out "$TMP/za" --dump "dda=$TMP/za.dda" --quiet && ok || bad "dump approx"
 cmp -s <(grep -v '^#' "$TMP/zg.dda") <(grep -v '^#' "$TMP/za.dda") && ok || bad "approx dump differs from golden's"
+# A scene's triangles as they left the timed front end equal golden's.
+for b in golden approx; do
+  "$GIRTD" render traces/scenes/animation.json --backend $b --out "$TMP/an_$b" --dump "triangle=$TMP/an_$b.trace" \
+    --quiet && ok || bad "triangle dump $b"
+done
+cmp -s <(grep -v '^#' "$TMP/an_golden.trace") <(grep -v '^#' "$TMP/an_approx.trace") && ok \
+  || bad "approx's triangle dump differs from golden's"
 
 # 6. A run longer than a second shows progress on a terminal, and not
 #    when stderr is a file.
 script -qec "'$GIRTD' render traces/scenes/demo.json --backend rtl --out '$TMP/win' --quiet" /dev/null \
   > "$TMP/tty" 2>&1 || true
 [[ -s "$TMP/win/report.json" ]] && ok || bad "render on a terminal"
-grep -qE "\[girtd\] rtl: frame 1/1, [0-9]+/[0-9]+ triangles" "$TMP/tty" && ok || bad "no progress line: $(tail -c 300 "$TMP/tty")"
+grep -qE "\[girtd\] rtl: frame 1/1, [0-9]+/[0-9]+ polygons lit \([0-9]+ %\), [0-9]+ triangles drawn" "$TMP/tty" && ok || bad "no progress line: $(tail -c 300 "$TMP/tty")"
 "$GIRTD" render traces/scenes/window.json --backend rtl --out "$TMP/win2" --quiet 2> "$TMP/err" && ok || bad "rtl render"
 check_registry "$TMP/win2/report.json"
 [[ ! -s "$TMP/err" ]] && ok || bad "stderr not empty without a terminal: $(head -c 200 "$TMP/err")"

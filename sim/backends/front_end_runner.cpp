@@ -1,10 +1,18 @@
-#include "frontend/front_end_runner.hpp"
+#include "backends/front_end_runner.hpp"
 
 #include "frontend/front_end.hpp"
 
 namespace girtd {
 
+namespace {
+uint64_t passes = 0;
+}  // namespace
+
+uint64_t front_end_passes() { return passes; }
+void count_front_end_pass() { ++passes; }
+
 FrontEndRun run_front_end(const Trace& polygons, const Params& params) {
+  count_front_end_pass();
   FrontEnd fe(ScreenMap{params.screen_width, params.screen_height}, params.depth_max_mapped);
   FrontEndRun run;
   run.triangles.path = polygons.path;
