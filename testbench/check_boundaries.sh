@@ -10,6 +10,7 @@ while IFS=: read -r file line include; do
   if [[ $include == *'"'* ]]; then
     [[ -f "$name" || $name == girtd/* ]] && continue  # a models/ header, or one generated from config/ (girtd/)
   else
+    [[ $name =~ ^(systemc|tlm|verilated) ]] && { echo "models/$file:$line: includes $name (SystemC or Verilator)"; fails=$((fails + 1)); continue; }
     [[ $name =~ ^[a-z_]+$ || $name == nlohmann/* || $name == glm/* ]] && continue  # C++ library, json, GLM
   fi
   echo "models/$file:$line: includes $name, outside models/ and the allowed libraries"

@@ -4,10 +4,9 @@
 // (view_transform) and for the scene's model transforms (sim/io/scene_reader).
 #pragma once
 
-#define GLM_ENABLE_EXPERIMENTAL  // gtx/rotate_vector: stable since GLM 0.9.5
-#include <glm/gtx/rotate_vector.hpp>
+#include "frontend/vec3.hpp"  // first: it checks the GLM definitions
 
-#include "frontend/vec3.hpp"
+#include <glm/gtx/rotate_vector.hpp>  // gtx (GLM_ENABLE_EXPERIMENTAL): stable since GLM 0.9.5
 
 namespace girtd {
 

@@ -3,7 +3,9 @@
 // dependent lookup). Two helpers GLM does not have follow.
 #pragma once
 
-#define GLM_FORCE_CTOR_INIT  // Vec3{} is the zero vector, as the stages expect
+#ifndef GLM_FORCE_CTOR_INIT  // models/CMakeLists.txt defines it for every file
+#error "GLM_FORCE_CTOR_INIT must be defined (Vec3{} is the zero vector the stages expect)"
+#endif
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 

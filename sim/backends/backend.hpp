@@ -32,10 +32,10 @@ class Backend {
   }
 };
 
-// "reference", "golden"; asking for a back end that is not built yet
-// ("approx", "rtl") is a usage error.
+// "reference" or "golden" (approx and rtl are the pipeline's: sim/pipeline).
 std::unique_ptr<Backend> make_backend(const std::string& name, const Params& params);
 
+// Every --backend name.
 std::vector<std::string> known_backends();
 
 // The hardware's Norm is a shift: every frame's Q must be 0 or a power of

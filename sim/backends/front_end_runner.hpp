@@ -4,7 +4,7 @@
 // draw, with the front end's counts. The timed back ends run the front end
 // as SystemC stages instead (sim/pipeline). Either way a render runs it once:
 // front_end_passes() counts the runs in this process (report.json
-// `front_end_passes`).
+// `frontend_passes`).
 #pragma once
 
 #include <cstdint>

@@ -59,6 +59,7 @@ RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& pa
   out.stats.wall_s = std::chrono::duration<double>(clock::now() - t0).count();
   out.shown = shown_image(fb);
   out.z = fb.z_plane();
+  if (dda_tap) backend.tap_dda({});  // the tap dies with this function
   if (tap) tap->commit();
   return out;
 }

@@ -2,7 +2,11 @@
 // pixel rate of the simulator, the frame's error against the reference), the
 // back end's two timing engines side by side, and the SystemC pipeline's
 // approx against rtl (pipeline_bench.hpp). --pipeline: that table alone.
+#include <unistd.h>
+
 #include <cmath>
+#include <ctime>
+#include <thread>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,7 +18,7 @@
 #include "cli/config_loader.hpp"
 #include "cli/output_set.hpp"
 #include "cli/pipeline_bench.hpp"
-#include "io/workloads.hpp"
+#include "io/workload_list.hpp"
 #include "common/input_error.hpp"
 #include "io/trace_reader.hpp"
 #include "rtl/timing_comparison.hpp"
@@ -49,14 +53,23 @@ ImageError compare(const RgbImage& a, const RgbImage& b) {
   return e;
 }
 
+// When and where: the READMEs quote bench.json (tools/bench_summary.py).
+nlohmann::json measured_on() {
+  char date[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
+  char host[256] = "";
+  gethostname(host, sizeof host - 1);
+  return {{"date", date}, {"host", host}, {"cores", std::thread::hardware_concurrency()}};
+}
+
 }  // namespace
 
 int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool bless,
               const std::vector<std::string>& inputs) {
   const Params params = load_params(config);
-  if (bless && !pipeline_only) throw InputError("--bless", 0, "blessing runs the pipeline table: add --pipeline");
-  if (!inputs.empty() && !pipeline_only) throw InputError(inputs[0], 0, "inputs are for the pipeline table: add --pipeline");
-  if (bless && !inputs.empty()) throw InputError("--bless", 0, "blessing stores every sample workload: name no inputs");
+  if (bless && !config.empty())
+    throw InputError("--bless", 0, "the stored expectations are the thesis configuration's: bless without --config");
   if (pipeline_only) {
     const PipelineBench pb = run_pipeline_bench(params, config, out_dir, bless, inputs);
     OutputSet files(out_dir);
@@ -114,12 +127,12 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
     timing_rows.push_back({{"trace", path}, {"pixels", c.model.pixels}, {"rtl_modeled_s", rtl_ms * 1e-3},
                            {"model_modeled_s", model_ms * 1e-3}, {"rtl_wall_s", c.rtl_wall_s},
                            {"model_wall_s", c.model_wall_s},
-                           {"rtl_dda_clocks_per_wall_s", double(c.rtl.dda_clocks) / c.rtl_wall_s}});
+                           {"rtl_dda_clocks_per_wall_s", double(c.rtl.dda.cycles) / c.rtl_wall_s}});
     char line[512];
     std::snprintf(line, sizeof line, "| %s | %llu | %.3f | %.3f | %+.5f %% | %.3f | %.3f | %.1fx | %.2e |\n",
                   fs::path(path).filename().c_str(), static_cast<unsigned long long>(c.model.pixels), rtl_ms, model_ms,
                   100 * diff, c.rtl_wall_s, c.model_wall_s, c.model_wall_s > 0 ? c.rtl_wall_s / c.model_wall_s : 0,
-                  double(c.rtl.dda_clocks) / c.rtl_wall_s);
+                  double(c.rtl.dda.cycles) / c.rtl_wall_s);
     md2 += line;
     std::fputs(line, stdout);
     std::fflush(stdout);
@@ -130,7 +143,8 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
   const WaveCostBench wb = run_wave_cost_bench(params, config, out_dir);
   md += wb.markdown;
   OutputSet files(out_dir);
-  files.add_text("bench.json", nlohmann::json{{"rows", rows},
+  files.add_text("bench.json", nlohmann::json{{"measured_on", measured_on()},
+                                              {"rows", rows},
                                               {"timing", timing_rows},
                                               {"pipeline", pb.rows},
                                               {"wave_cost", wb.rows},

@@ -1,7 +1,11 @@
 #include "cli/expectations.hpp"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
+#include "cli/output_set.hpp"
+#include "common/input_error.hpp"
 #include "io/sha256.hpp"
 
 namespace girtd {
@@ -42,6 +46,43 @@ std::vector<std::string> expectation_differences(const json& expected, const jso
     out.push_back(it.key() + ": expected " + it->dump() + ", got " + g.dump());
   }
   return out;
+}
+
+std::optional<StoredExpectations> load_expectations() {
+  std::ifstream in(kExpectationFile);
+  if (!in) return std::nullopt;
+  const json file = json::parse(in, nullptr, false);
+  if (file.is_discarded() || !file.contains("config_key") || !file.contains("inputs"))
+    throw InputError(kExpectationFile, 0, "not a stored-expectations file: re-bless it (tools/girtd bless)");
+  return StoredExpectations{file.at("config_key").get<std::string>(), file.at("inputs")};
+}
+
+std::vector<std::string> bless_changes(const std::optional<StoredExpectations>& old, const json& inputs,
+                                       const std::string& key) {
+  if (!old) return {"no stored expectations before: " + std::to_string(inputs.size()) + " input(s) stored"};
+  std::vector<std::string> out;
+  if (old->config_key != key)
+    out.push_back("configuration " + old->config_key + " -> " + key + ": every value re-blessed");
+  for (auto it = inputs.begin(); it != inputs.end(); ++it) {
+    if (!old->inputs.contains(it.key())) {
+      out.push_back(it.key() + ": new");
+      continue;
+    }
+    for (const std::string& d : expectation_differences(old->inputs.at(it.key()), *it)) out.push_back(it.key() + ": " + d);
+  }
+  for (auto it = old->inputs.begin(); it != old->inputs.end(); ++it)
+    if (!inputs.contains(it.key())) out.push_back(it.key() + ": dropped");
+  return out;
+}
+
+void save_expectations(const json& inputs, const std::string& key) {
+  const std::filesystem::path path(kExpectationFile);
+  const json file = {{"config_key", key},
+                     {"about", "girtd bench --pipeline --bless (tools/girtd bless); testbench/README.md"},
+                     {"inputs", inputs}};
+  OutputSet out(path.parent_path().string());
+  out.add_text(path.filename().string(), file.dump(1) + "\n");
+  out.commit();
 }
 
 std::string config_key(const Params& params) {

@@ -6,6 +6,7 @@
 // intended change and prints what changed.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,5 +29,20 @@ std::vector<std::string> expectation_differences(const nlohmann::json& expected,
 // merged configuration. Expectations are compared only under the
 // configuration they were blessed with.
 std::string config_key(const Params& params);
+
+// The stored file; nullopt when there is none.
+struct StoredExpectations {
+  std::string config_key;
+  nlohmann::json inputs;  // input path -> expectation_of(...)
+};
+std::optional<StoredExpectations> load_expectations();
+
+// What blessing `inputs` under `key` changes against `old`: one line per
+// changed value, added or dropped input, or the configuration.
+std::vector<std::string> bless_changes(const std::optional<StoredExpectations>& old, const nlohmann::json& inputs,
+                                       const std::string& key);
+
+// Writes the file whole or not at all.
+void save_expectations(const nlohmann::json& inputs, const std::string& key);
 
 }  // namespace girtd

@@ -6,6 +6,7 @@
 #include <exception>
 #include <filesystem>
 
+#include "backends/backend.hpp"
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
 #include "rtl/rtl_variants.hpp"
@@ -24,14 +25,20 @@ int main(int argc, char** argv) {
   RenderArgs ra;
   CLI::App* render = app.add_subcommand("render", "render a model (OBJ, PLY, STL, OFF ...), a scene (JSON) or a trace");
   render->add_option("input", ra.input, "model, scene or trace file (traces/FORMAT.md)")->required();
-  render->add_option("--backend", ra.backend, "reference | golden | approx | rtl")->capture_default_str();
+  render->add_option("--backend", ra.backend, "reference | golden | approx | rtl")
+      ->check(CLI::IsMember(known_backends()))
+      ->capture_default_str();
   render->add_option("--out", ra.out_dir, "output directory (default out/<input name>/)");
-  render->add_option("--level", ra.level, "level of a headerless trace: polygon | triangle | dda | thesis");
-  render->add_option("--frames", ra.frames, "last | all (one PNG per frame)")->capture_default_str();
-  render->add_option("--wave", ra.wave, "waveform file (.fst or .vcd)");
-  render->add_option("--wave-window", ra.wave_window, "T0:T1 window of the waveform");
-  render->add_option("--wave-scope", ra.wave_scopes, "module path to record (repeatable)");
-  render->add_option("--aa", ra.aa, "antialiasing width Q for every frame (overrides the trace)");
+  render->add_option("--level", ra.level, "level of a headerless trace: polygon | triangle | dda | thesis")
+      ->check(CLI::IsMember({"polygon", "triangle", "dda", "thesis"}));
+  render->add_option("--frames", ra.frames, "last | all (one PNG per frame)")
+      ->check(CLI::IsMember({"last", "all"}))
+      ->capture_default_str();
+  CLI::Option* wave = render->add_option("--wave", ra.wave, "waveform file (.fst or .vcd)");
+  render->add_option("--wave-window", ra.wave_window, "T0:T1 window of the waveform")->needs(wave);
+  render->add_option("--wave-scope", ra.wave_scopes, "module path to record (repeatable)")->needs(wave);
+  render->add_option("--aa", ra.aa, "antialiasing width Q for every frame (overrides the trace)")
+      ->check(CLI::NonNegativeNumber);
   render->add_option("--dump", ra.dump, "LEVEL=FILE: record the stream at a stage boundary");
   render->add_option("--config", ra.config, kConfigHelp)->allow_extra_args(false);
   render->add_flag("--z-png", ra.z_png, "also write z.png (16-bit depth)");
@@ -47,21 +54,27 @@ int main(int argc, char** argv) {
   bench->add_option("--config", bench_config, kConfigHelp)->allow_extra_args(false);
   bench->add_option("--out", bench_out, "output directory")->capture_default_str();
   bool bench_pipeline = false;
-  bench->add_flag("--pipeline", bench_pipeline,
+  CLI::Option* pipeline_only = bench->add_flag("--pipeline", bench_pipeline,
                   "only the SystemC pipeline's table (approx against rtl, every back end against the stored "
                   "expectations); exit 1 on a disagreement");
   std::vector<std::string> bench_inputs;
-  bench->add_option("inputs", bench_inputs, "with --pipeline: these inputs only (default: traces/workloads.txt)")
-      ->check(CLI::ExistingFile);
+  CLI::Option* inputs =
+      bench->add_option("inputs", bench_inputs, "with --pipeline: these inputs only (default: traces/workloads.txt)")
+          ->check(CLI::ExistingFile)
+          ->needs(pipeline_only);
   bool bench_bless = false;
-  bench->add_flag("--bless", bench_bless, "with --pipeline: rewrite testbench/golden/expectations.json from this run");
+  bench->add_flag("--bless", bench_bless, "with --pipeline: rewrite testbench/golden/expectations.json from this run")
+      ->needs(pipeline_only)
+      ->excludes(inputs);
 
   RegressArgs rg;
   CLI::App* regress = app.add_subcommand("regress", "RTL against the golden model, trace by trace");
   regress->add_option("traces", rg.traces, "traces (default: the triangle- and DDA-level traces of traces/workloads.txt)");
-  regress->add_option("--random", rg.random, "also N random triangles");
+  regress->add_option("--random", rg.random, "also N random triangles")->check(CLI::NonNegativeNumber);
   regress->add_option("--seed", rg.seed, "seed of the random triangles")->capture_default_str();
-  regress->add_option("--stall", rg.stall, "back-pressure probability on every other triangle")->capture_default_str();
+  regress->add_option("--stall", rg.stall, "back-pressure probability on every other triangle")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   regress->add_flag("--both-compare-modes", rg.both_compare_modes, "run same-cycle and pipelined X/Y compare");
   regress->add_flag("--dda-only", rg.dda_only, "compare the DDA alone, not the whole RTL back end");
   regress->add_option("--config", rg.config, kConfigHelp)->allow_extra_args(false);

@@ -7,7 +7,7 @@
 #include "cli/config_loader.hpp"
 #include "rtl/backend_rtl.hpp"
 #include "rtl/dda_regression.hpp"
-#include "io/workloads.hpp"
+#include "io/workload_list.hpp"
 
 namespace girtd {
 
@@ -32,8 +32,8 @@ int run_regress(const RegressArgs& a) {
   for (bool pipelined : modes) {
     p.xy_compare_pipelined = pipelined;
     DdaRtl rtl(p);
-    BackendRtl backend(p);
-    BackendRtl* whole = a.dda_only ? nullptr : &backend;
+    const std::unique_ptr<BackendRtl> backend = make_backend_rtl(p);
+    BackendRtl* whole = a.dda_only ? nullptr : backend.get();
     for (const std::string& t : traces) report(regress_trace(t, p, rtl, whole, a.stall));
     if (a.random > 0) report(regress_random(a.random, a.seed, p, rtl, whole, a.stall));
   }

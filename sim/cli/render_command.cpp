@@ -36,8 +36,6 @@ DumpRequest parse_dump(const std::string& spec) {
 void reject_unbuilt_options(const RenderArgs& a) {
   if (!a.wave.empty() && !is_pipeline_backend(a.backend))
     throw InputError("--wave", 0, "waveforms record the SystemC pipeline: use --backend rtl (or approx)");
-  if (a.frames != "last" && a.frames != "all")
-    throw InputError("--frames", 0, "expected 'last' or 'all', got '" + a.frames + "'");
 }
 
 // What render draws: the triangle- or DDA-level trace, and for models,
@@ -68,7 +66,6 @@ LoadedInput load_input(const RenderArgs& a, const Params& params, bool untimed) 
     else in.trace = std::move(t);
   }
   if (a.aa) {
-    if (*a.aa < 0) throw InputError("--aa", 0, "Q must be >= 0");
     Trace& t = in.polygons ? *in.polygons : in.trace;
     for (TraceFrame& f : t.frames) {
       f.settings.q = *a.aa;

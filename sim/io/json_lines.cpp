@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/input_error.hpp"
+#include "io/number_text.hpp"
 
 namespace girtd {
 namespace {
@@ -131,10 +132,12 @@ int JsonLines::line(const std::string& pointer) const {
       continue;
     }
     auto a = items_.find(node);
-    const bool index = !token.empty() && token.size() < 10 &&
-                       std::all_of(token.begin(), token.end(), [](unsigned char ch) { return ch >= '0' && ch <= '9'; });
-    if (a == items_.end() || !index || std::stoul(token) >= a->second.size()) break;
-    node = a->second[std::stoul(token)];
+    int64_t index = -1;  // an array index is digits only
+    const bool digits = std::all_of(token.begin(), token.end(), [](unsigned char ch) { return ch >= '0' && ch <= '9'; });
+    if (a == items_.end() || !digits || read_integer(token, index) != NumberRead::kOk ||
+        uint64_t(index) >= a->second.size())
+      break;
+    node = a->second[size_t(index)];
   }
   return line_of_[node];
 }

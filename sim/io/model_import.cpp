@@ -45,7 +45,9 @@ std::string lower_extension(const std::string& path) {
   std::string msg = importer.GetErrorString();
   int line = 0;
   std::smatch m;
-  if (std::regex_search(msg, m, std::regex("[Ll]ine\\s*:?\\s*(\\d{1,9})"))) line = std::stoi(m[1]);
+  int64_t at = 0;
+  if (std::regex_search(msg, m, std::regex("[Ll]ine\\s*:?\\s*(\\d{1,9})")) && read_integer(m.str(1), at) == NumberRead::kOk)
+    line = int(at);
   while (!msg.empty() && std::isspace(static_cast<unsigned char>(msg.back()))) msg.pop_back();
   fail(path, line, "cannot read the model: " + (msg.empty() ? std::string("unknown format or empty file") : msg));
 }

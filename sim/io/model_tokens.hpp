@@ -2,15 +2,14 @@
 // (obj_precheck.cpp, model_precheck.cpp, ply_precheck.cpp).
 #pragma once
 
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "common/input_error.hpp"
+#include "io/number_text.hpp"
 
 namespace girtd {
 
@@ -54,17 +53,11 @@ inline void split_tokens(std::string_view line, std::vector<std::string_view>& o
   }
 }
 
-// A decimal integer (optional sign) making up the whole of `t`, |value| < 10^18.
+// A decimal integer (optional sign) making up the whole of `t`, of at most
+// 18 digits (|value| < 10^18: counts and indices stay far from overflow).
 inline bool parse_integer(std::string_view t, int64_t& value) {
-  size_t i = t.size() > 0 && (t[0] == '-' || t[0] == '+') ? 1 : 0;
-  if (i == t.size() || t.size() - i > 18) return false;
-  int64_t v = 0;
-  for (size_t k = i; k < t.size(); ++k) {
-    if (t[k] < '0' || t[k] > '9') return false;
-    v = v * 10 + (t[k] - '0');
-  }
-  value = t[0] == '-' ? -v : v;
-  return true;
+  const size_t sign = !t.empty() && (t[0] == '-' || t[0] == '+') ? 1 : 0;
+  return t.size() - sign <= 18 && read_integer(t, value) == NumberRead::kOk;
 }
 
 // The leading integer of an OBJ face corner "V", "V/T", "V//N" or "V/T/N".
@@ -72,16 +65,9 @@ inline bool parse_leading_integer(std::string_view t, int64_t& value) {
   return parse_integer(t.substr(0, t.find('/')), value);
 }
 
-// A real number making up the whole of `t` (strtod's syntax, so "nan" and
-// "1e999" parse: to NaN and infinity).
-inline bool parse_real(std::string_view t, double& value) {
-  if (t.empty() || t.size() > 64) return false;
-  const std::string s(t);
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtod(s.c_str(), &end);
-  return end == s.c_str() + s.size();
-}
+// A real number making up the whole of `t` ("nan" and "1e999" parse: to
+// NaN and infinity).
+inline bool parse_real(std::string_view t, double& value) { return read_real(t, value) != NumberRead::kNotANumber; }
 
 // Why assimp 5.2.5's fast_atof would read the real number `t` otherwise
 // than its text says, or "" when it reads it right: only decimal syntax

@@ -93,13 +93,11 @@ class ObjStatements {
   int no_ = 0, start_ = 0;
 };
 
-// A number as assimp 5.2.5 counts one in a vertex (ObjTools' IsNumeric
-// looks at the first character only: a digit, '-' or '+'), that strtod
-// also reads whole.
+// A number as assimp 5.2.5 counts one in a vertex: ObjTools' IsNumeric
+// looks at the first character only, a digit, '-' or '+' (whether fast_atof
+// then reads the rest right is check_assimp_real's question).
 bool assimp_number(std::string_view t) {
-  double d = 0;
-  return !t.empty() && (std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '-' || t[0] == '+') &&
-         parse_real(t, d);
+  return !t.empty() && (std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '-' || t[0] == '+');
 }
 
 // An index part of a face corner: empty (v//vn) or a non-zero int as
@@ -111,7 +109,8 @@ bool index_part_ok(std::string_view part) {
   const std::string_view digits = part.substr(part[0] == '-' ? 1 : 0);
   if (digits.empty() || digits.size() > 10 || digits[0] == '0') return false;
   if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) return false;
-  return std::stoll(std::string(digits)) <= 2147483647;
+  int64_t value = 0;
+  return read_integer(digits, value) == NumberRead::kOk && value <= 2147483647;
 }
 
 // The text after `keyword`, trimmed (names may hold spaces).

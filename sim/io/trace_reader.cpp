@@ -9,6 +9,7 @@
 
 #include "common/input_error.hpp"
 #include "common/triangle_setup.hpp"
+#include "io/number_text.hpp"
 #include "io/trace_writer.hpp"
 
 namespace girtd {
@@ -52,14 +53,10 @@ class LineParser {
   }
   double real(size_t i, const char* name) const {
     const std::string& s = f_[i];
-    char* end = nullptr;
-    errno = 0;
-    const double v = std::strtod(s.c_str(), &end);
-    const bool hex = s.find_first_of("xX") != std::string::npos;  // strtod reads hex floats; the format is decimal
-    if (end == s.c_str() || *end != '\0' || hex) fail(std::string(name) + ": '" + s + "' is not a number");
-    // ERANGE on underflow is fine (a subnormal is finite); on overflow it is not.
-    if (!std::isfinite(v) || (errno == ERANGE && std::fabs(v) == HUGE_VAL))
-      fail(std::string(name) + ": '" + s + "' is not finite");
+    double v = 0;
+    if (read_real(s, v) == NumberRead::kNotANumber) fail(std::string(name) + ": '" + s + "' is not a number");
+    // Below the smallest subnormal reads as zero; past the largest double, as infinity.
+    if (!std::isfinite(v)) fail(std::string(name) + ": '" + s + "' is not finite");
     return v;
   }
   double real_in(size_t i, const char* name, double lo, double hi) const {
@@ -69,11 +66,10 @@ class LineParser {
   }
   int64_t integer(size_t i, const char* name) const {
     const std::string& s = f_[i];
-    char* end = nullptr;
-    errno = 0;
-    const long long v = std::strtoll(s.c_str(), &end, 10);
-    if (end == s.c_str() || *end != '\0') fail(std::string(name) + ": '" + s + "' is not an integer");
-    if (errno == ERANGE) fail(std::string(name) + ": '" + s + "' is out of range");
+    int64_t v = 0;
+    const NumberRead r = read_integer(s, v);
+    if (r == NumberRead::kNotANumber) fail(std::string(name) + ": '" + s + "' is not an integer");
+    if (r == NumberRead::kOutOfRange) fail(std::string(name) + ": '" + s + "' is out of range");
     return v;
   }
   int64_t integer_in(size_t i, const char* name, int64_t lo, int64_t hi) const {

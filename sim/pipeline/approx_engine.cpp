@@ -5,13 +5,13 @@
 
 #include "backends/golden_backend.hpp"
 #include "backends/render_session.hpp"
-#include "pipeline/back_end_engine.hpp"
+#include "backends/backend_engine.hpp"
 #include "timing/backend_timing.hpp"
 
 namespace girtd {
 namespace {
 
-class ApproxEngine : public BackEndEngine {
+class ApproxEngine : public BackendEngine {
  public:
   explicit ApproxEngine(const Params& p)
       : period_ticks_(static_cast<uint64_t>(p.ticks(p.dda_clock_ns))), dda_(p), fb_(p.screen_width, p.screen_height, static_cast<uint16_t>(p.depth_clear)), had_(fb_, p.one_minus_nf),
@@ -39,8 +39,8 @@ class ApproxEngine : public BackEndEngine {
     fb_.swap();
   }
   uint64_t now_tick() const override { return timing_.timing().ticks; }
-  BackEndResult result() const override {
-    BackEndResult r = r_;
+  BackendResult result() const override {
+    BackendResult r = r_;
     const BackendTiming& t = timing_.timing();
     r.ticks = t.ticks;
     r.had = had_.counts();
@@ -60,11 +60,11 @@ class ApproxEngine : public BackEndEngine {
   FrameBuffer fb_;
   Had had_;
   BackendTimingModel timing_;
-  BackEndResult r_;
+  BackendResult r_;
 };
 
 }  // namespace
 
-std::unique_ptr<BackEndEngine> make_approx_engine(const Params& p) { return std::make_unique<ApproxEngine>(p); }
+std::unique_ptr<BackendEngine> make_approx_engine(const Params& p) { return std::make_unique<ApproxEngine>(p); }
 
 }  // namespace girtd

@@ -10,16 +10,17 @@
 
 #include "common/input_error.hpp"
 #include "backends/backend.hpp"
+#include "rtl/backend_rtl.hpp"
 #include "pipeline/pipeline_elaboration.hpp"
 
 namespace girtd {
 
-std::unique_ptr<BackEndEngine> make_approx_engine(const Params& p);
-std::unique_ptr<BackEndEngine> make_rtl_engine(const Params& p, bool traced);
+std::unique_ptr<BackendEngine> make_approx_engine(const Params& p);
 
-std::unique_ptr<BackEndEngine> make_back_end_engine(const std::string& backend, const Params& p, bool traced) {
+// "approx" or "rtl"; `traced`: the rtl engine on the build with FST tracing.
+std::unique_ptr<BackendEngine> make_backend_engine(const std::string& backend, const Params& p, bool traced) {
   if (backend == "approx") return make_approx_engine(p);
-  if (backend == "rtl") return make_rtl_engine(p, traced);
+  if (backend == "rtl") return make_backend_rtl(p, 0, traced);
   throw std::logic_error("not a pipeline back end: " + backend);
 }
 
@@ -39,7 +40,7 @@ void check_pipeline_input(const Trace& trace) {
 
 PipelineElaboration::PipelineElaboration(const std::string& backend, const Trace& input, const Params& p,
                                          const RenderOptions& opt, DumpTap* tap)
-    : p_(p), opt_(opt), engine_(make_back_end_engine(backend, p, opt.wave.has_value())), backend_(backend) {
+    : p_(p), opt_(opt), engine_(make_backend_engine(backend, p, opt.wave.has_value())), backend_(backend) {
   for (const TraceFrame& f : input.frames) settings_.push_back(f.settings);
   // The stream that entered is dumped as it is; one made inside, by the
   // preparer stage as it crosses (front_end_modules.cpp).
@@ -82,9 +83,9 @@ void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
   FifoActivity& in_record = fifo_activity(in);
   in_fifo_[&a] = &in_record;
   back_activity_ = &a;
-  BackEndStage::FrameDone done;
+  BackendStage::FrameDone done;
   if (opt_.keep_all_frames) done = [this](size_t) { per_frame_.push_back(engine_->shown()); };
-  BackEndStage::Progress progress;
+  BackendStage::Progress progress;
   if (opt_.progress)
     progress = [this](size_t frame, uint64_t triangles, double modeled_s) {
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
@@ -101,7 +102,7 @@ void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
                    total_items_ ? 100.0 * double(done) / double(total_items_) : 0.0, drawn, modeled_s * 1e3, wall);
       progress_printed_ = true;
     };
-  back_end_ = std::make_unique<BackEndStage>("back_end", *engine_, settings_, p_.base_tick_ns, a, in_record,
+  back_end_ = std::make_unique<BackendStage>("back_end", *engine_, settings_, p_.base_tick_ns, a, in_record,
                                              std::move(done), std::move(progress));
   back_end_->in(in);
   if (p_.pipeline_rtl_sync_every_tick && engine_->rtl()) back_end_->sync_every_tick(true);

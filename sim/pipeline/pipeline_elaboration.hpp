@@ -16,8 +16,8 @@
 #include "backends/render_session.hpp"
 #include "dda/dda_preparer.hpp"
 #include "frontend/front_end_stages.hpp"
-#include "pipeline/back_end_engine.hpp"
-#include "pipeline/back_end_stage.hpp"
+#include "backends/backend_engine.hpp"
+#include "pipeline/backend_stage.hpp"
 #include "pipeline/source_stage.hpp"
 #include "pipeline/timed_stage.hpp"
 #include "wave/wave_recorder.hpp"
@@ -111,7 +111,7 @@ class PipelineElaboration {
 
   const Params& p_;
   const RenderOptions& opt_;
-  std::unique_ptr<BackEndEngine> engine_;
+  std::unique_ptr<BackendEngine> engine_;
   std::string backend_;
   std::vector<FrameSettings> settings_;
   const Trace* polygon_source_ = nullptr;
@@ -124,7 +124,7 @@ class PipelineElaboration {
   std::unique_ptr<DdaPreparer> preparer_;
   std::vector<std::shared_ptr<void>> owned_;
   std::vector<std::unique_ptr<sc_core::sc_module>> modules_;
-  std::unique_ptr<BackEndStage> back_end_;
+  std::unique_ptr<BackendStage> back_end_;
   std::vector<std::unique_ptr<StageActivity>> activities_;
   std::map<const StageActivity*, const FifoActivity*> in_fifo_;  // each stage's input FIFO
   std::map<const void*, std::unique_ptr<FifoActivity>> fifo_records_;

@@ -6,7 +6,7 @@
 namespace girtd {
 
 void PipelineElaboration::collect(RunStats& s) const {
-  const BackEndResult be = engine_->result();
+  const BackendResult be = engine_->result();
   const double tick_s = p_.base_tick_ns * 1e-9;
   const double modeled = double(back_end_->end_tick()) * tick_s;
   s.triangles_in = back_activity_->items;

@@ -196,7 +196,7 @@ std::vector<ReportKey> make_keys() {
       frontend_key("triangles_out", "to the preparer", &FrontendCounts::triangles_out),
       frontend_key("depth_sort_comparisons", "comparisons the depth sort made", &FrontendCounts::depth_sort_comparisons),
       frontend_key("full_sorts", "frames sorted from scratch", &FrontendCounts::full_sorts),
-      key("front_end_passes", "count",
+      key("frontend_passes", "count",
           "times the front end ran over the input in this render: 1 for models, scenes and polygon traces on every "
           "back end (golden and reference run it before drawing, approx and rtl as their pipeline's stages; "
           "`--dump` and the progress line take what that one run made), 0 for triangle and DDA traces",

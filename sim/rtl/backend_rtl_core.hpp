@@ -1,6 +1,6 @@
-// The driver of the Verilated back end, for any build of girtd_backend (the
-// fast one, or the one with FST tracing compiled in: same ports, different
-// class). backend_rtl.cpp and backend_rtl_traced.cpp instantiate it.
+// The rtl back end for any build of girtd_backend (the fast one, or the one
+// with FST tracing compiled in: same ports, different class).
+// backend_rtl.cpp and backend_rtl_traced.cpp instantiate it.
 #pragma once
 
 #include <array>
@@ -21,25 +21,6 @@ class VerilatedFstC;
 
 namespace girtd {
 
-// What BackendRtl forwards to: one per Verilated build.
-class BackendRtlDriver {
- public:
-  virtual ~BackendRtlDriver() = default;
-  virtual void begin_frame(Rgb background) = 0;
-  virtual void draw(const DdaParams& d) = 0;
-  virtual void end_frame() = 0;
-  virtual void drain() = 0;
-  virtual void step_until_ready() = 0;
-  virtual void step_to(uint64_t tick) = 0;
-  virtual uint64_t ticks() const = 0;
-  virtual BackendCounters counters() const = 0;
-  virtual std::vector<uint8_t> shown_rgb() const = 0;
-  virtual std::vector<uint16_t> z_plane() const = 0;
-  virtual void on_tick(std::function<void(const BackendRtl::TickProbe&)> hook) = 0;
-  // Records the model's signals into `tfp` (the traced build only).
-  virtual void trace(VerilatedFstC* tfp) = 0;
-};
-
 template <typename M, typename = void>
 struct HasFstTrace : std::false_type {};
 template <typename M>
@@ -47,7 +28,7 @@ struct HasFstTrace<M, std::void_t<decltype(std::declval<M&>().trace(std::declval
     : std::true_type {};
 
 template <typename Model>
-class BackendRtlCore final : public BackendRtlDriver {
+class BackendRtlCore final : public BackendRtl {
  public:
   BackendRtlCore(const Params& p, uint32_t x_seed) : params_(p), layout_(rtl_layout(p)) {
     if (x_seed != 0) {
@@ -88,8 +69,9 @@ class BackendRtlCore final : public BackendRtlDriver {
   }
   ~BackendRtlCore() override { top_->final(); }
 
-  void begin_frame(Rgb bg) override {
+  void begin_frame(const FrameSettings& s) override {
     Model& t = *top_;
+    const Rgb bg = s.background;
     drain();
     const int c = params_.ep_color.out_bits;
     set_port(t.background_i, (int64_t(bg.r) << (2 * c)) | (int64_t(bg.g) << c) | bg.b, 3 * c);
@@ -101,6 +83,7 @@ class BackendRtlCore final : public BackendRtlDriver {
 
   void draw(const DdaParams& d) override {
     Model& t = *top_;
+    ++triangles_;
     load_dda_ports(t, d, params_);
     t.in_valid_i = 1;
     for (uint64_t guard = 0;; ++guard) {
@@ -131,9 +114,11 @@ class BackendRtlCore final : public BackendRtlDriver {
     clock_until([](const Model& t) { return bool(t.idle_o); }, "the RTL back end did not go idle");
   }
 
-  void step_until_ready() override {
+  // Clocks until the DDA could take a parameter set on this tick.
+  uint64_t ready_tick() override {
     top_->in_valid_i = 0;
     clock_until([](const Model& t) { return bool(t.in_ready_o); }, "the RTL DDA did not become ready");
+    return ticks_;
   }
 
   // Clocks with no input up to `target`. A back end that is idle (DDA,
@@ -141,7 +126,7 @@ class BackendRtlCore final : public BackendRtlDriver {
   // whole DDA periods are skipped without clocking (the clock-enable phase
   // is unchanged by a multiple of its period). Not with stolen VRAM cycles
   // (a free-running counter) or a tick hook (waveforms) attached.
-  void step_to(uint64_t target) override {
+  void idle_until(uint64_t target) override {
     Model& t = *top_;
     t.in_valid_i = 0;
     const bool may_skip = !on_tick_ && steal_period_ == 0;
@@ -158,41 +143,45 @@ class BackendRtlCore final : public BackendRtlDriver {
     }
   }
 
-  uint64_t ticks() const override { return ticks_; }
+  uint64_t now_tick() const override { return ticks_; }
 
-  BackendCounters counters() const override {
+  // The RTL's own counters (ports), and the DDA clocks per state seen on them.
+  BackendResult result() const override {
     const Model& t = *top_;
-    BackendCounters c;
-    c.ticks = ticks_;
-    c.dda_clocks = t.dda_clocks_o;
-    c.dda_wait_ticks = t.dda_wait_ticks_o;
-    c.pixels_generated = t.pixels_generated_o;
-    c.written = t.written_o;
-    c.blended = t.blended_o;
-    c.z_rejected = t.z_rejected_o;
-    c.dropped = t.dropped_o;
-    c.page_misses = t.page_misses_o;
-    c.had_busy_ticks = t.had_busy_ticks_o;
-    c.had_vram_wait_ticks = t.had_vram_wait_ticks_o;
-    c.fifo_max = t.fifo_max_o;
-    c.dda_state_clocks = state_clocks_;
-    return c;
+    BackendResult r;
+    r.ticks = ticks_;
+    r.triangles_drawn = triangles_;
+    r.pixels_generated = t.pixels_generated_o;
+    r.had = HadCounts{t.written_o, t.blended_o, t.z_rejected_o, t.dropped_o};
+    r.dda.cycles = t.dda_clocks_o;
+    r.dda.emitted = t.pixels_generated_o;
+    r.dda.per_state = state_clocks_;
+    r.dda_wait_ticks = t.dda_wait_ticks_o;
+    r.page_misses = t.page_misses_o;
+    r.had_busy_ticks = t.had_busy_ticks_o;
+    r.had_vram_wait_ticks = t.had_vram_wait_ticks_o;
+    r.fifo_max = t.fifo_max_o;
+    return r;
   }
 
   // The VRAM read through the backdoor, pixel by pixel (row-major), each at
   // its word address {page number, pixel in the page}.
-  std::vector<uint8_t> shown_rgb() const override {
+  RgbImage shown() const override {
     const auto& mem = vram();
     const BitField shown = top_->front_o ? layout_.vram.rgb1 : layout_.vram.rgb0;
     const int c = params_.ep_color.out_bits;
-    std::vector<uint8_t> out(size_t(params_.screen_width) * size_t(params_.screen_height) * 3);
+    RgbImage img;
+    img.width = params_.screen_width;
+    img.height = params_.screen_height;
+    std::vector<uint8_t>& out = img.rgb;
+    out.resize(size_t(params_.screen_width) * size_t(params_.screen_height) * 3);
     size_t o = 0;
     for (int y = 0; y < params_.screen_height; ++y)
       for (int x = 0; x < params_.screen_width; ++x) {
         const uint64_t rgb = bits(mem[layout_.page.vram_address(x, y)], shown);
         for (int k = 2; k >= 0; --k) out[o++] = static_cast<uint8_t>(rgb >> (k * c));
       }
-    return out;
+    return img;
   }
 
   std::vector<uint16_t> z_plane() const override {
@@ -253,6 +242,7 @@ class BackendRtlCore final : public BackendRtlDriver {
   uint64_t ticks_ = 0;
   uint64_t period_ = 1, steal_period_ = 0;  // DDA clock and VRAM steal period, in ticks
   std::array<uint64_t, static_cast<size_t>(DdaState::kCount)> state_clocks_{};
+  uint64_t triangles_ = 0;
   std::function<void(const BackendRtl::TickProbe&)> on_tick_;
 };
 

@@ -6,7 +6,7 @@
 
 namespace girtd {
 
-std::unique_ptr<BackendRtlDriver> make_traced_backend_driver(const Params&, uint32_t) {
+std::unique_ptr<BackendRtl> make_traced_backend_rtl(const Params&, uint32_t) {
   throw std::logic_error("this executable has no traced build of the back end");
 }
 

@@ -6,7 +6,7 @@
 
 namespace girtd {
 
-std::unique_ptr<BackendRtlDriver> make_traced_backend_driver(const Params& p, uint32_t x_seed) {
+std::unique_ptr<BackendRtl> make_traced_backend_rtl(const Params& p, uint32_t x_seed) {
   return std::make_unique<BackendRtlCore<Vgirtd_backend_traced>>(p, x_seed);
 }
 

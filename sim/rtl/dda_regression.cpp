@@ -26,7 +26,7 @@ class FrameChecker {
         fb_golden_(p.screen_width, p.screen_height, uint16_t(p.depth_clear)),
         fb_rtl_(p.screen_width, p.screen_height, uint16_t(p.depth_clear)),
         had_golden_(fb_golden_, p.one_minus_nf), had_rtl_(fb_rtl_, p.one_minus_nf) {
-    if (backend_) start_ = backend_->counters();
+    if (backend_) start_ = backend_->result();
   }
 
   void begin_frame(Rgb background) {
@@ -69,18 +69,19 @@ class FrameChecker {
   // the frame bit for bit, and every pixel accounted for.
   void check_backend(RegressionRow& row) {
     backend_->end_frame();
-    const BackendCounters now = backend_->counters();
+    const BackendResult now = backend_->result();
     const HadCounts& g = had_golden_.counts();
     const uint64_t generated = now.pixels_generated - start_.pixels_generated;
-    const uint64_t accounted = now.accounted() - start_.accounted();
+    const uint64_t accounted = now.had.total() - start_.had.total();
     row.ticks = now.ticks - start_.ticks;
     if (accounted != generated) {
       row.failure = "back end: generated " + std::to_string(generated) + " != written + blended + rejected + dropped " +
                     std::to_string(accounted);
-    } else if (now.written - start_.written != g.written || now.blended - start_.blended != g.blended ||
-               now.z_rejected - start_.z_rejected != g.z_rejected || now.dropped - start_.dropped != g.dropped) {
+    } else if (now.had.written - start_.had.written != g.written || now.had.blended - start_.had.blended != g.blended ||
+               now.had.z_rejected - start_.had.z_rejected != g.z_rejected ||
+               now.had.dropped - start_.had.dropped != g.dropped) {
       row.failure = "back end: HAD counts differ from the golden HAD's";
-    } else if (backend_->shown_rgb() != fb_golden_.shown_bytes()) {
+    } else if (backend_->shown().rgb != fb_golden_.shown_bytes()) {
       row.failure = "back end: shown frame differs from the golden HAD's";
     } else if (backend_->z_plane() != fb_golden_.z_plane()) {
       row.failure = "back end: Z buffer differs from the golden HAD's";
@@ -91,7 +92,7 @@ class FrameChecker {
   DdaEngine golden_;
   DdaRtl& rtl_;
   BackendRtl* backend_;
-  BackendCounters start_;
+  BackendResult start_;
   double stall_;
   uint32_t seed_;
   FrameBuffer fb_golden_, fb_rtl_;

@@ -29,12 +29,13 @@ DdaParams stream_params(const Params& p, PixelStream s) {
 }  // namespace
 
 StreamTiming time_stream(const Params& p, PixelStream s) {
-  BackendRtl be(p);
+  const std::unique_ptr<BackendRtl> rtl = make_backend_rtl(p);
+  BackendRtl& be = *rtl;
   be.begin_frame(Rgb{});
-  const BackendCounters start = be.counters();
+  const BackendResult start = be.result();
   be.draw(stream_params(p, s));
   be.drain();
-  const BackendCounters end = be.counters();
+  const BackendResult end = be.result();
   StreamTiming t;
   t.pixels = end.pixels_generated - start.pixels_generated;
   t.page_misses = end.page_misses - start.page_misses;
@@ -43,39 +44,41 @@ StreamTiming time_stream(const Params& p, PixelStream s) {
 }
 
 double frame_clear_us(const Params& p) {
-  BackendRtl be(p);
-  const uint64_t t0 = be.counters().ticks;
+  const std::unique_ptr<BackendRtl> rtl = make_backend_rtl(p);
+  BackendRtl& be = *rtl;
+  const uint64_t t0 = be.now_tick();
   be.begin_frame(Rgb{});
-  return double(be.counters().ticks - t0) * p.base_tick_ns * 1e-3;
+  return double(be.now_tick() - t0) * p.base_tick_ns * 1e-3;
 }
 
 TraceTiming time_trace(const Params& p, const std::string& path) {
   const Trace trace = read_trace(path, std::nullopt, p);
-  BackendRtl be(p);
+  const std::unique_ptr<BackendRtl> rtl = make_backend_rtl(p);
+  BackendRtl& be = *rtl;
   DdaPreparer prep(p);
   TraceTiming t;
   uint64_t ticks = 0;
-  BackendCounters first = be.counters();
+  const BackendResult first = be.result();
   for (const TraceFrame& f : trace.frames) {
     be.begin_frame(f.settings.background);
-    const uint64_t t0 = be.counters().ticks;
+    const uint64_t t0 = be.now_tick();
     DdaParams d;
     for (const Triangle& tri : f.triangles)
       if (prep.prepare(tri, f.settings, d) == PrepareResult::kReady) be.draw(d);
     for (const DdaParams& dd : f.dda) be.draw(dd);
     be.drain();
-    ticks += be.counters().ticks - t0;
+    ticks += be.now_tick() - t0;
     be.end_frame();
   }
-  const BackendCounters end = be.counters();
+  const BackendResult end = be.result();
   t.pixels = end.pixels_generated - first.pixels_generated;
   t.seconds = double(ticks) * p.base_tick_ns * 1e-9;
   const double waited = double(end.dda_wait_ticks - first.dda_wait_ticks) / p.ticks(p.dda_clock_ns);
-  const double worked = double(end.dda_clocks - first.dda_clocks);
+  const double worked = double(end.dda.cycles - first.dda.cycles);
   t.dda_wait_fraction = worked + waited > 0 ? waited / (worked + waited) : 0;
   t.fifo_max = end.fifo_max;
   const uint64_t misses = end.page_misses - first.page_misses;
-  t.nac = misses ? double(end.accounted() - first.accounted()) / double(misses) : 0;
+  t.nac = misses ? double(end.had.total() - first.had.total()) / double(misses) : 0;
   return t;
 }
 

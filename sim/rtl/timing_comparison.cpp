@@ -42,14 +42,16 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
     fb.swap();
   }
   c.model = model.timing();
-  BackendRtl rtl(p);  // made (and reset) outside the timed part, as the pipeline's is
+  // Made (and reset) outside the timed part, as the pipeline's is.
+  const std::unique_ptr<BackendRtl> made = make_backend_rtl(p);
+  BackendRtl& rtl = *made;
   const auto t1 = clock::now();
   for (size_t i = 0; i < frames.size(); ++i) {
     rtl.begin_frame(trace.frames[i].settings.background);
     for (const DdaParams& d : frames[i]) rtl.draw(d);
     rtl.end_frame();
   }
-  c.rtl = rtl.counters();
+  c.rtl = rtl.result();
   const auto t2 = clock::now();
   c.model_wall_s = std::chrono::duration<double>(t1 - t0).count();
   c.rtl_wall_s = std::chrono::duration<double>(t2 - t1).count();

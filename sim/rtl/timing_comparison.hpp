@@ -13,7 +13,7 @@ namespace girtd {
 
 struct TimingComparison {
   BackendTiming model;
-  BackendCounters rtl;
+  BackendResult rtl;
   double model_wall_s = 0;  // golden DDA + HAD + event model
   double rtl_wall_s = 0;    // the Verilated back end alone
 };

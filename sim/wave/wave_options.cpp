@@ -1,9 +1,9 @@
 #include "wave/wave_options.hpp"
 
 #include <cmath>
-#include <cstdlib>
 
 #include "common/input_error.hpp"
+#include "io/number_text.hpp"
 
 namespace girtd {
 namespace {
@@ -15,12 +15,11 @@ bool ends_with(const std::string& s, const std::string& tail) {
 }
 
 double parse_time(const std::string& text, double dda_clock_ns) {
-  const char* begin = text.c_str();
-  char* end = nullptr;
-  const double v = std::strtod(begin, &end);
-  if (end == begin || !std::isfinite(v) || v < 0)
+  double v = 0;
+  size_t used = 0;
+  if (read_leading_real(text, v, used) != NumberRead::kOk || !std::isfinite(v) || v < 0)
     throw InputError("--wave-window", 0, "'" + text + "' is not a time (a number >= 0 with ns, us, ms, s or cycles)");
-  const std::string unit(end);
+  const std::string unit = text.substr(used);
   double ns;
   if (unit.empty() || unit == "ns") ns = v;
   else if (unit == "us") ns = v * 1e3;
@@ -38,10 +37,6 @@ bool WaveOptions::vcd() const { return ends_with(path, ".vcd"); }
 
 WaveOptions parse_wave_options(const std::string& path, const std::string& window,
                                const std::vector<std::string>& scopes, double dda_clock_ns, double base_tick_ns) {
-  if (path.empty()) {
-    if (!window.empty()) throw InputError("--wave-window", 0, "needs --wave FILE");
-    if (!scopes.empty()) throw InputError("--wave-scope", 0, "needs --wave FILE");
-  }
   WaveOptions w;
   w.path = path;
   if (base_tick_ns < 2 || base_tick_ns != std::floor(base_tick_ns))

@@ -263,9 +263,9 @@ void check_rtl_wave_scopes(const std::vector<std::string>& scopes, const Params&
   } remove_after{path};
   std::vector<FstVar> vars;
   {
-    BackendRtl rtl(p, 0, true);
+    const std::unique_ptr<BackendRtl> rtl = make_backend_rtl(p, 0, true);
     VerilatedFstC tfp;
-    rtl.trace(&tfp);
+    rtl->trace(&tfp);
     tfp.open(path.c_str());
     tfp.dump(0);
     tfp.close();

@@ -42,7 +42,19 @@ printf 'girtd-trace 1 triangle\ntri 0 0 0 0 0 0 1  9 0 0 0 0 0 nan  0 9 0 0 0 0 
 [[ $rc -eq 2 ]] && grep -q "does_not_exist.trace: no such file" "$TMP/err" && ok || bad "missing file (exit $rc)"
 
 "$GIRTD" render traces/equilateral_200.trace --backend nosuch --out "$TMP/nosuch" 2> "$TMP/err"; rc=$?
-[[ $rc -eq 2 && ! -e "$TMP/nosuch" ]] && ok || bad "unknown back end gave exit $rc"
+[[ $rc -eq 2 && ! -e "$TMP/nosuch" && $(wc -l < "$TMP/err") -eq 1 ]] && grep -q "backend" "$TMP/err" && ok \
+  || bad "unknown back end gave exit $rc: $(cat "$TMP/err")"
+# Enumerated and ranged options are refused by the parser, one line, exit 2.
+for args in "--frames some" "--aa -1" "--level quad" "--wave-window 0:1us"; do
+  "$GIRTD" render traces/equilateral_200.trace $args --out "$TMP/badopt" 2> "$TMP/err"; rc=$?
+  [[ $rc -eq 2 && ! -e "$TMP/badopt" && $(wc -l < "$TMP/err") -eq 1 ]] && ok || bad "render $args: exit $rc, $(cat "$TMP/err")"
+done
+for args in "--stall 2" "--random -3"; do
+  "$GIRTD" regress $args 2> "$TMP/err" > /dev/null; rc=$?
+  [[ $rc -eq 2 ]] && ok || bad "regress $args: exit $rc"
+done
+"$GIRTD" bench --bless 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 ]] && grep -q "pipeline" "$TMP/err" && ok || bad "bench --bless without --pipeline: exit $rc"
 
 "$GIRTD" render traces/equilateral_200.trace --no-such-option 2> /dev/null; rc=$?
 [[ $rc -eq 2 ]] && ok || bad "unknown option gave exit $rc"

@@ -8,16 +8,16 @@ source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh" "$1" "$2"
 # 1. OBJ, PLY, STL and OFF models render with a front-end report.
 for m in cube.obj sphere.ply sphere.stl torus.off; do
   "$GIRTD" render "traces/models/$m" --out "$TMP/$m" --quiet && ok || bad "render $m"
-  grep -q '"triangles_made"' "$TMP/$m/report.json" && ok || bad "$m: report lacks frontend.triangles_made"
-  grep -q '"level": "polygon"' "$TMP/$m/report.json" && ok || bad "$m: level is not polygon"
+  jq -e '.frontend.triangles_made > 0' "$TMP/$m/report.json" >/dev/null && ok || bad "$m: no frontend.triangles_made"
+  jq -e '.level == "polygon"' "$TMP/$m/report.json" >/dev/null && ok || bad "$m: level is not polygon"
 done
 grep -q "triangles_made" "$TMP/cube.obj/report.md" && ok || bad "report.md lacks the front-end table"
 
 # 2. A scene: --dump polygons=FILE replays to the same picture.
 "$GIRTD" render traces/scenes/animation.json --out "$TMP/a1" --dump "polygons=$TMP/a.poly" --quiet && ok || bad "scene dump run"
 "$GIRTD" render "$TMP/a.poly" --out "$TMP/a2" --quiet && ok || bad "polygon replay run"
-h1=$(grep -o '"image_sha256": "[0-9a-f]*"' "$TMP/a1/report.json")
-h2=$(grep -o '"image_sha256": "[0-9a-f]*"' "$TMP/a2/report.json")
+h1=$(jq -r .image_sha256 "$TMP/a1/report.json")
+h2=$(jq -r .image_sha256 "$TMP/a2/report.json")
 [[ -n "$h1" && "$h1" == "$h2" ]] && ok || bad "polygon dump replay differs: $h1 vs $h2"
 "$GIRTD" render traces/equilateral_200.trace --out "$TMP/eq" --dump "polygons=$TMP/x.poly" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 && ! -e "$TMP/x.poly" ]] && ok || bad "polygon dump of a triangle trace gave exit $rc"

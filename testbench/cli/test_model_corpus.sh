@@ -19,7 +19,7 @@ BACKENDS=(golden approx rtl)
 
 # A top-level key of report.json (written with 2-space indent): its value.
 report_value() {  # REPORT KEY
-  sed -n 's/^  "'"$2"'": "\{0,1\}\([^",]*\)"\{0,1\},\{0,1\}$/\1/p' "$1"
+  jq -r --arg k "$2" '.[$k]' "$1"
 }
 
 files=() twins=() expects=() shas=() polys=()
@@ -64,10 +64,10 @@ for i in "${!files[@]}"; do
     if [[ ${expects[$i]} == warning ]]; then
       awk -v f="$CORPUS/$f" 'index($0, "warning: ") == 1 && index($0, f) { found = 1 } END { exit !found }' "$out.err" &&
         ok || bad "$f on $b: no 'warning: ' line naming the file on stderr"
-      grep -q '^  "warnings": \[$' "$out/report.json" && ok || bad "$f on $b: report.json warnings is empty"
+      jq -e '.warnings | length > 0' "$out/report.json" >/dev/null && ok || bad "$f on $b: report.json warnings is empty"
     else
       ! grep -q '^warning: ' "$out.err" && ok || bad "$f on $b: unexpected $(grep -m1 '^warning: ' "$out.err")"
-      grep -q '^  "warnings": \[\]' "$out/report.json" && ok || bad "$f on $b: report.json warnings is not empty"
+      jq -e '.warnings == []' "$out/report.json" >/dev/null && ok || bad "$f on $b: report.json warnings is not empty"
     fi
     if [[ $b == golden ]]; then
       golden_sha[$f]=$sha

@@ -27,8 +27,8 @@ done
 [[ "$(sha "$TMP/star_golden")" == "$(sha "$TMP/star_approx")" ]] && ok || bad "star: approx frame differs"
 # The front end runs once per render, on either kind of back end.
 for b in golden approx; do
-  jq -e '.front_end_passes == 1' "$TMP/star_$b/report.json" >/dev/null && ok \
-    || bad "star on $b ran the front end $(jq .front_end_passes "$TMP/star_$b/report.json") times"
+  jq -e '.frontend_passes == 1' "$TMP/star_$b/report.json" >/dev/null && ok \
+    || bad "star on $b ran the front end $(jq .frontend_passes "$TMP/star_$b/report.json") times"
 done
 
 # 3. The throughput keys: present, non-null, consistent.

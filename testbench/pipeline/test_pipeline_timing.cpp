@@ -98,22 +98,22 @@ TEST_CASE("a FIFO two deep blocks the stage before a slow one and never holds mo
 TEST_CASE("rtl in the pipeline takes exactly the bare Verilated back end's ticks", "[pipeline][rtl]") {
   const Params p = Params::defaults();
   const Trace dda = prepared(small_triangles(200, 5), p);
-  BackendCounters c;
+  BackendResult c;
   std::vector<uint8_t> bare_rgb;
   {  // one Verilated back end alive at a time (backend_rtl.hpp)
-    BackendRtl bare(p);
-    bare.begin_frame(dda.frames[0].settings.background);
-    for (const DdaParams& d : dda.frames[0].dda) bare.draw(d);
-    bare.end_frame();
-    c = bare.counters();
-    bare_rgb = bare.shown_rgb();
+    const std::unique_ptr<BackendRtl> bare = make_backend_rtl(p);
+    bare->begin_frame(dda.frames[0].settings);
+    for (const DdaParams& d : dda.frames[0].dda) bare->draw(d);
+    bare->end_frame();
+    c = bare->result();
+    bare_rgb = bare->shown().rgb;
   }
 
   const RenderOutput out = run_pipeline("rtl", dda, p, {});
   REQUIRE(out.stats.timing);
   CHECK(out.stats.timing->modeled_s == Approx(double(c.ticks) * 5e-9).epsilon(1e-12));
   CHECK(out.stats.pixels_generated == c.pixels_generated);
-  CHECK(out.stats.had.written == c.written);
+  CHECK(out.stats.had.written == c.had.written);
   CHECK(out.stats.timing->page_misses == c.page_misses);
   CHECK(out.stats.timing->dda_starved_s == 0.0);
   CHECK(out.shown.rgb == bare_rgb);

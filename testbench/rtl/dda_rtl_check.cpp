@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
       keep.push_back(std::make_unique<DdaRtl>(p, seed));
       last = keep.back().get();
       std::unique_ptr<BackendRtl> backend;
-      if (with_backend) backend = std::make_unique<BackendRtl>(p, seed);
+      if (with_backend) backend = make_backend_rtl(p, seed);
       std::vector<RegressionRow> rows;
       for (const std::string& t : expanded) rows.push_back(regress_trace(t, p, *last, backend.get(), 0.3));
       if (random > 0) rows.push_back(regress_random(random, seed, p, *last, backend.get(), 0.3));

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "dda/dda_params.hpp"
-#include "pipeline/back_end_engine.hpp"
+#include "backends/backend_engine.hpp"
 #include "pipeline/stage_activity.hpp"
 #include "pipeline/token.hpp"
 #include "rtl/backend_rtl.hpp"
@@ -20,7 +20,7 @@
 
 namespace girtd {
 
-class BackEndStage : public sc_core::sc_module {
+class BackendStage : public sc_core::sc_module {
  public:
   sc_core::sc_fifo_in<Token<DdaParams>> in;
 
@@ -29,8 +29,8 @@ class BackEndStage : public sc_core::sc_module {
   using FrameDone = std::function<void(size_t frame)>;
   using Progress = std::function<void(size_t frame, uint64_t triangles, double modeled_s)>;
 
-  SC_HAS_PROCESS(BackEndStage);
-  BackEndStage(const sc_core::sc_module_name& name, BackEndEngine& engine, const std::vector<FrameSettings>& frames,
+  SC_HAS_PROCESS(BackendStage);
+  BackendStage(const sc_core::sc_module_name& name, BackendEngine& engine, const std::vector<FrameSettings>& frames,
                double tick_ns, StageActivity& activity, FifoActivity& in_fifo, FrameDone frame_done,
                Progress progress);
 
@@ -56,7 +56,7 @@ class BackEndStage : public sc_core::sc_module {
   void on_tick(const BackendRtl::TickProbe& p);
   void sample();
 
-  BackEndEngine& engine_;
+  BackendEngine& engine_;
   const std::vector<FrameSettings>& frames_;
   double tick_ns_;
   StageActivity& a_;

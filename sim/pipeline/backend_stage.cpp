@@ -1,4 +1,4 @@
-#include "pipeline/back_end_stage.hpp"
+#include "pipeline/backend_stage.hpp"
 
 #include <cmath>
 
@@ -7,7 +7,7 @@ namespace girtd {
 using sc_core::sc_time;
 using sc_core::sc_time_stamp;
 
-BackEndStage::BackEndStage(const sc_core::sc_module_name& name, BackEndEngine& engine,
+BackendStage::BackendStage(const sc_core::sc_module_name& name, BackendEngine& engine,
                            const std::vector<FrameSettings>& frames, double tick_ns, StageActivity& activity,
                            FifoActivity& in_fifo, FrameDone frame_done, Progress progress)
     : sc_module(name), engine_(engine), frames_(frames), tick_ns_(tick_ns), a_(activity), in_fifo_(in_fifo),
@@ -16,18 +16,18 @@ BackEndStage::BackEndStage(const sc_core::sc_module_name& name, BackEndEngine& e
   SC_THREAD(sample);
 }
 
-sc_time BackEndStage::at(uint64_t tick) const { return sc_time(static_cast<double>(tick) * tick_ns_, sc_core::SC_NS); }
+sc_time BackendStage::at(uint64_t tick) const { return sc_time(static_cast<double>(tick) * tick_ns_, sc_core::SC_NS); }
 
-uint64_t BackEndStage::tick_of(const sc_time& t) const {
+uint64_t BackendStage::tick_of(const sc_time& t) const {
   return static_cast<uint64_t>(std::ceil(t.to_seconds() * 1e9 / tick_ns_ - 1e-6));
 }
 
-void BackEndStage::sync_to(uint64_t tick) {
+void BackendStage::sync_to(uint64_t tick) {
   const sc_time t = at(tick);
   if (t > sc_time_stamp()) wait(t - sc_time_stamp());
 }
 
-void BackEndStage::sync_to_ns(double t_ns) {
+void BackendStage::sync_to_ns(double t_ns) {
   const sc_time t(t_ns, sc_core::SC_NS);
   if (t > sc_time_stamp()) wait(t - sc_time_stamp());
 }
@@ -35,7 +35,7 @@ void BackEndStage::sync_to_ns(double t_ns) {
 // A tick of the RTL inside the waveform's window: bring SystemC time to it,
 // then dump both sides. The clock is low for the first 2 ns of a 5 ns tick
 // (the dump before the edge) and high after it.
-void BackEndStage::on_tick(const BackendRtl::TickProbe& p) {
+void BackendStage::on_tick(const BackendRtl::TickProbe& p) {
   const double edge_ns = double(p.tick) * tick_ns_;
   const double t_ns = p.rising ? edge_ns : edge_ns - std::floor(tick_ns_ / 2);
   if (lockstep_ && p.rising) sync_to_ns(edge_ns);
@@ -48,7 +48,7 @@ void BackEndStage::on_tick(const BackendRtl::TickProbe& p) {
 
 // The next token; a DDA waiting for one is starved. Inside a waveform's
 // window the RTL keeps ticking (and dumping) while it waits.
-Token<DdaParams> BackEndStage::next_token() {
+Token<DdaParams> BackendStage::next_token() {
   Token<DdaParams> tok;
   if (in.nb_read(tok)) return tok;
   const sc_time t0 = sc_time_stamp();
@@ -77,7 +77,7 @@ Token<DdaParams> BackEndStage::next_token() {
 
 // With no RTL to clock (approx), the SystemC side is sampled once per base
 // tick inside the window, until the back end is done.
-void BackEndStage::sample() {
+void BackendStage::sample() {
   if (!wave_ || engine_.rtl()) return;
   for (uint64_t tick = tick_of(sc_time(wave_->window_start_ns(), sc_core::SC_NS)); !finished_; ++tick) {
     const double t_ns = double(tick) * tick_ns_;
@@ -90,7 +90,7 @@ void BackEndStage::sample() {
   }
 }
 
-void BackEndStage::run() {
+void BackendStage::run() {
   if ((wave_ || lockstep_) && engine_.rtl())
     engine_.rtl()->on_tick([this](const BackendRtl::TickProbe& p) { on_tick(p); });
   uint64_t triangles = 0;

@@ -1,4 +1,4 @@
-#include "io/workloads.hpp"
+#include "io/workload_list.hpp"
 
 #include <algorithm>
 #include <filesystem>

@@ -2,7 +2,7 @@
 // VRAM, in base ticks. Two engines: `approx` (golden DDA and HAD for what
 // is drawn, models/timing's event model for when) and `rtl` (the Verilated
 // girtd_backend, clocked tick by tick). The SystemC stage around them
-// (back_end_stage.hpp) hands over parameter sets as they arrive.
+// (backend_stage.hpp) hands over parameter sets as they arrive.
 #pragma once
 
 #include <array>
@@ -22,7 +22,7 @@ namespace girtd {
 
 class BackendRtl;
 
-struct BackEndResult {
+struct BackendResult {
   uint64_t ticks = 0;             // base ticks from the first frame's clear to the last swap
   uint64_t triangles_drawn = 0;
   uint64_t pixels_generated = 0;
@@ -35,9 +35,9 @@ struct BackEndResult {
   uint64_t fifo_max = 0;          // DDA -> HAD FIFO
 };
 
-class BackEndEngine {
+class BackendEngine {
  public:
-  virtual ~BackEndEngine() = default;
+  virtual ~BackendEngine() = default;
   // The tick the DDA can take the next parameter set (the rtl engine clocks
   // the RTL up to it).
   virtual uint64_t ready_tick() = 0;
@@ -48,14 +48,11 @@ class BackEndEngine {
   virtual void drain() = 0;      // until the DDA, FIFO and HAD are idle
   virtual void end_frame() = 0;  // drain, write the cache back, swap
   virtual uint64_t now_tick() const = 0;
-  virtual BackEndResult result() const = 0;
+  virtual BackendResult result() const = 0;
   virtual RgbImage shown() const = 0;
   virtual std::vector<uint16_t> z_plane() const = 0;
   // Waveforms (rtl only): the RTL to record, and a call on every tick.
   virtual BackendRtl* rtl() { return nullptr; }
 };
-
-// "approx" or "rtl"; `traced`: the rtl engine on the build with FST tracing.
-std::unique_ptr<BackEndEngine> make_back_end_engine(const std::string& backend, const Params& p, bool traced);
 
 }  // namespace girtd
