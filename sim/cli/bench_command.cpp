@@ -76,7 +76,8 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
     files.add_text("pipeline.json", nlohmann::json{{"rows", pb.rows}, {"config", params.source}}.dump(2) + "\n");
     files.add_text("pipeline.md", "# girtd bench --pipeline\n" + pb.markdown);
     files.commit();
-    std::printf("%d input(s) disagree; wrote %s\n", pb.failures, files.path("pipeline.md").c_str());
+    std::printf("%d failure(s) (back ends disagreeing, or differing from the stored expectations); wrote %s\n", pb.failures,
+                files.path("pipeline.md").c_str());
     return pb.failures ? 1 : 0;
   }
   nlohmann::json rows = nlohmann::json::array();
@@ -154,7 +155,7 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
   files.add_text("bench.md", "# girtd bench\n\nError is against the reference back end's frame (0..255 per channel).\n\n" + md);
   files.commit();
   std::printf("wrote %s and %s\n", files.path("bench.json").c_str(), files.path("bench.md").c_str());
-  if (pb.failures) std::printf("%d input(s): approx and rtl disagree\n", pb.failures);
+  if (pb.failures) std::printf("%d failure(s) in the pipeline table (see above)\n", pb.failures);
   return pb.failures ? 1 : 0;
 }
 

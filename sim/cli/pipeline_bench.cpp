@@ -62,7 +62,7 @@ std::vector<std::string> differences_from(const nlohmann::json& stored,
 void bless_expectations(PipelineBench& b, const std::optional<StoredExpectations>& old, const nlohmann::json& blessed,
                         const Params& params) {
   if (b.failures) {
-    std::printf("not blessed: %d input(s) disagree between back ends\n", b.failures);
+    std::printf("not blessed: %d failure(s) between back ends\n", b.failures);
     return;
   }
   const std::string key = config_key(params);
