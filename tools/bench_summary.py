@@ -9,6 +9,8 @@ Reads testbench/measured/bench.json (copied from out/bench/bench.json by
   timing    the event model against the Verilated back end (models/timing/README.md)
   demo      the demo scene's report on approx (sim/README.md); rendered now, not
             recorded: modeled figures are deterministic
+  numerics  wrapped EP values in use on a few inputs, on golden (models/dda/README.md);
+            rendered now, deterministic
 """
 import json
 import pathlib
@@ -96,10 +98,37 @@ def demo(build):
     ]) + "\n"
 
 
+def render(build, inp, *extra):
+    with tempfile.TemporaryDirectory() as out:
+        subprocess.run([str(build / "bin/girtd"), "render", inp, "--backend", "golden", "--out", out, "--quiet",
+                        *extra], cwd=ROOT, check=True, stderr=subprocess.DEVNULL)
+        return json.loads((pathlib.Path(out) / "report.json").read_text())
+
+
+def numerics(build):
+    huge = "traces/stress/huge_overhang.trace"
+    out = ["| input | wrapped values in use | triangles affected | pixels written |", "|---|---|---|---|"]
+    for inp in [huge, "traces/demo.trace", "traces/scenes/animation.json", "traces/scenes/demo.json"]:
+        r = render(build, inp)
+        n = r["numerics"]
+        eps = ", ".join(f"{k} {v['wraps']:,}" for k, v in n.items() if isinstance(v, dict) and v["wraps"])
+        out.append(f"| `{inp}` | {eps or 'none'} | {n['triangles_affected']} | {r['pixels_written']:,} |")
+    with tempfile.TemporaryDirectory() as d:
+        cfg = pathlib.Path(d) / "d14.json"
+        cfg.write_text('{"ep": {"d": {"int_bits": 14}}}')
+        r = render(build, huge, "--config", str(cfg))
+    wraps = sum(v["wraps"] for v in r["numerics"].values() if isinstance(v, dict))
+    out.append(f"| `{huge}` with `ep.d.int_bits` 14 | {wraps or 'none'} | {r['numerics']['triangles_affected']} | "
+               f"{r['pixels_written']:,} |")
+    return "\n".join(out) + "\n"
+
+
 if __name__ == "__main__":
     build = pathlib.Path(sys.argv[1])
     if sys.argv[2] == "demo":
         print(demo(build), end="")
+    elif sys.argv[2] == "numerics":
+        print(numerics(build), end="")
     else:
         bench = json.loads(RECORD.read_text())
         print({"pipeline": pipeline, "coupling": coupling, "timing": timing}[sys.argv[2]](bench), end="")

@@ -35,7 +35,7 @@ def main():
     check = "--check" in args
     args = [a for a in args if a != "--check"]
     build = pathlib.Path(args[0]).resolve()
-    files = [pathlib.Path(a) for a in args[1:]] or sorted(p for p in ROOT.rglob("README.md")
+    files = [pathlib.Path(a).resolve() for a in args[1:]] or sorted(p for p in ROOT.rglob("README.md")
                                                          if not any(part.startswith("build") for part in p.relative_to(ROOT).parts))
     stale = []
     for path in files:

@@ -10,6 +10,7 @@
 #include "config/params.hpp"
 #include "common/types.hpp"
 #include "dda/dda_params.hpp"
+#include "dda/ep_numerics.hpp"
 
 namespace girtd {
 
@@ -28,28 +29,71 @@ class DdaDatapath {
     pix_.x = in.x0;
     pix_.y = in.y0;
     for (int i = 0; i < kEpCount; ++i) pix_.v[i] = wrap(in.ep[i].v, *fmt_[i]);
+    exact_ = pix_;
   }
 
   void step_x(int s) {
     pix_.x = static_cast<int>(wrap_to_bits(pix_.x + s, xy_bits_));
-    for (int i = 0; i < kEpCount; ++i) pix_.v[i] = wrap(pix_.v[i] + s * in_.ep[i].dx, *fmt_[i]);
+    for (int i = 0; i < kEpCount; ++i) add(i, s * in_.ep[i].dx);
   }
   void step_y() {
     pix_.y = static_cast<int>(wrap_to_bits(pix_.y + 1, xy_bits_));
-    for (int i = 0; i < kEpCount; ++i) pix_.v[i] = wrap(pix_.v[i] + in_.ep[i].dy, *fmt_[i]);
+    for (int i = 0; i < kEpCount; ++i) add(i, in_.ep[i].dy);
   }
-  void save() { aux_ = pix_; }
-  void restore() { pix_ = aux_; }
+  // The same registers computed without wrapping: where they differ, the
+  // hardware holds a wrapped value. (The adders are modular, so a value
+  // that wraps and steps back is right again: only a wrapped value in use
+  // changes the picture.)
+  const DdaRegisters& exact() const { return exact_; }
+  void save() {
+    aux_ = pix_;
+    exact_aux_ = exact_;
+  }
+  void restore() {
+    pix_ = aux_;
+    exact_ = exact_aux_;
+  }
 
   const DdaRegisters& pix() const { return pix_; }
   const FixFormat& format(int ep) const { return *fmt_[ep]; }
 
  private:
+  // One EP's adder: W bits, wrapping like the hardware's.
+  void add(int i, int64_t step) {
+    pix_.v[i] = wrap(pix_.v[i] + step, *fmt_[i]);
+    exact_.v[i] += step;
+  }
+
   const DdaParams& in_;
   int xy_bits_;
+  DdaRegisters exact_, exact_aux_;
   const FixFormat* fmt_[kEpCount];
   DdaRegisters pix_, aux_;
 };
+
+// An output stage clips (fig. 4.20): the EP's integer part is outside
+// 0..2^out_bits - 1.
+inline bool output_saturates(int64_t raw, const FixFormat& f) {
+  const int64_t integer = raw >> f.frac_bits;
+  return integer < 0 || integer > (int64_t{1} << f.out_bits) - 1;
+}
+
+// A finished run's numerics from the wrapped uses and output clips counted
+// clock by clock, and whether the triangle was affected (a wrapped value in
+// use, or a value the preparer clamped).
+inline EpNumerics run_numerics(const DdaParams& in, const std::array<uint64_t, kEpCount>& wraps,
+                               const std::array<uint64_t, kEpCount>& saturations) {
+  EpNumerics n;
+  for (int i = 0; i < kEpCount; ++i) {
+    n.ep[i].wraps = wraps[i];
+    n.ep[i].saturations = saturations[i];
+  }
+  if (in.clamped || n.wraps() > 0) {
+    n.triangles_affected = 1;
+    n.first_affected_line = in.source_line;
+  }
+  return n;
+}
 
 // The 69-bit FIFO word (plus full-width X, Y) from the registers as they
 // stand: the EP output stages of fig. 4.20 and the nf the sequencer's nf unit

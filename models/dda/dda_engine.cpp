@@ -31,6 +31,7 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
   auto can_step = [&](const DdaRegisters& r, int s) { return s > 0 ? r.x < in.xmax : r.x > in.xmin; };
 
   DdaRunStats st;
+  std::array<uint64_t, kEpCount> wraps{}, saturations{};
   DdaState state = DdaState::kCheck, after_wait = DdaState::kCheck;
   int walk_dir = +1;
   bool first_check = true;
@@ -46,10 +47,19 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
 
   for (;;) {
     const DdaRegisters r = dp.pix();  // this clock's pixel, before the clock's op
+    const DdaRegisters exact = dp.exact();  // the same, had no adder wrapped
     const DdaState now = state;
+    // Every clock tests the edges (D1..D3); a wrapped D puts the pixel on the wrong side.
+    for (int e = kEpD1; e <= kEpD3; ++e) wraps[e] += r.v[e] != exact.v[e];
     bool emit = false, done = false;
     auto emit_here = [&] {
       emit = true;
+      for (int i : {kEpR, kEpG, kEpB, kEpT, kEpZ}) {
+        // T's 1.0 is 256, carried out as 255 by design (models/dda/README.md): not a clip.
+        const bool t_one = i == kEpT && (r.v[i] >> dp.format(i).frac_bits) == 256;
+        saturations[i] += !t_one && output_saturates(r.v[i], dp.format(i));
+        wraps[i] += r.v[i] != exact.v[i];
+      }
       if (!sink) return;
       DdaEmit e;
       e.raw = r.v;
@@ -170,6 +180,8 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
     if (done) break;
     if (st.cycles > clock_bound) throw std::logic_error("DDA: traversal did not terminate");
   }
+  st.triangles = 1;
+  st.numerics = run_numerics(in, wraps, saturations);
   return st;
 }
 

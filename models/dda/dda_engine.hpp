@@ -11,6 +11,7 @@
 #include "common/types.hpp"
 #include "config/params.hpp"
 #include "dda/dda_params.hpp"
+#include "dda/ep_numerics.hpp"
 
 namespace girtd {
 
@@ -34,6 +35,8 @@ struct DdaClock {
 struct DdaRunStats {
   uint64_t cycles = 0;
   uint64_t emitted = 0;
+  uint64_t triangles = 0;  // runs summed in (1 for one run)
+  EpNumerics numerics;     // wraps and output saturations (clamps: the preparer's)
   std::array<uint64_t, static_cast<int>(DdaState::kCount)> per_state{};
   bool ended_at_limit = false;  // DDApix as written ended a walk at Xmin/Xmax
   uint64_t wasted() const { return cycles - emitted; }

@@ -24,6 +24,7 @@ struct DdaParams {
   std::array<EpInit, kEpCount> ep{};
   double q = 1.0;  // Norm width: 0 or 2^k (the Norm unit is a shift)
   int source_line = 0;
+  bool clamped = false;  // the preparer clamped a value to its EP (not in traces)
 
   bool operator==(const DdaParams& o) const {
     return x0 == o.x0 && y0 == o.y0 && xmin == o.xmin && xmax == o.xmax && ymax == o.ymax &&

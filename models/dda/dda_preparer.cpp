@@ -44,6 +44,8 @@ PrepareResult DdaPreparer::prepare(const Triangle& t, const FrameSettings& f, Dd
     ep.dx = to_fixed(dx, fmt, &c2);
     ep.dy = to_fixed(dy, fmt, &c3);
     counts_.clamped_values += c1 + c2 + c3;
+    counts_.clamps[size_t(&ep - &out.ep[0])] += c1 + c2 + c3;
+    out.clamped = out.clamped || c1 || c2 || c3;
   };
   // T is carried on a 0..256 scale so that its 8-bit output saturates to 255 = 1.0.
   const double attr_scale[kAttrCount] = {1, 1, 1, 256, 1};

@@ -4,6 +4,7 @@
 // conversion to the EP formats of config/girtd.json.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 
@@ -18,6 +19,7 @@ enum class PrepareResult { kReady, kDegenerate, kOffWindow, kNoLatticeRow };
 struct PreparerCounts {
   uint64_t prepared = 0, degenerate = 0, off_window = 0, no_lattice_row = 0;
   uint64_t clamped_values = 0;  // a start value or derivative that did not fit its EP
+  std::array<uint64_t, kEpCount> clamps{};  // the same, per EP
 };
 
 class DdaPreparer {

@@ -102,6 +102,8 @@ DdaRunStats DdaPix::run(const DdaParams& in, const DdaEngine::PixelSink& sink) c
     } while (!past_limit() && interno());
     restore(DdaState::kRun);
   }
+  st.triangles = 1;
+  st.numerics = run_numerics(in, {}, {});  // the appendix program's registers are its own: not counted
   return st;
 }
 

@@ -6,6 +6,8 @@
 namespace girtd {
 
 void accumulate(DdaRunStats& total, const DdaRunStats& one) {
+  total.numerics.add_triangle(one.numerics, total.triangles);
+  total.triangles += one.triangles;
   total.cycles += one.cycles;
   total.emitted += one.emitted;
   for (size_t i = 0; i < total.per_state.size(); ++i) total.per_state[i] += one.per_state[i];

@@ -14,6 +14,7 @@
 #include "common/input_error.hpp"
 #include "common/triangle_setup.hpp"
 #include "io/png_io.hpp"
+#include "report/limit_warnings.hpp"
 #include "report/report.hpp"
 #include "io/sha256.hpp"
 #include "io/trace_reader.hpp"
@@ -163,6 +164,10 @@ int run_render(const RenderArgs& a) {
   ctx.level = level_name(input.polygons ? TraceLevel::kPolygon : trace.level);
   ctx.image_sha256 = sha256_hex(out.shown.rgb);
   ctx.warnings = warnings;
+  if (const auto w = wrap_warning(a.input, out.stats, params)) {  // a hardware limit hit: counted and warned
+    std::fprintf(stderr, "warning: %s\n", w->c_str());
+    ctx.warnings.push_back(*w);
+  }
   if (ctx.backend == "rtl") ctx.rtl_build = built_rtl_key();
   ctx.front_end_passes = front_end_passes();
   const nlohmann::json report = make_report(ctx, out.stats, params);

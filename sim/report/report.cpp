@@ -115,6 +115,14 @@ std::string report_markdown(const json& r) {
       o << "| `" << it.key() << "` | " << it->dump() << " |\n";
   }
   o << "\nStages:\n\n" << stages_markdown(r.at("stages"), r.at("stage_order"));
+  if (r.at("numerics").is_object()) {  // where the EPs' formats were exceeded (dda/ep_numerics.hpp)
+    o << "\nNumerics (triangles affected: " << r.at("numerics").at("triangles_affected") << "):\n\n"
+      << "| EP | wrapped values in use | outputs clipped | preparer clamps |\n|---|---|---|---|\n";
+    for (auto it = r.at("numerics").begin(); it != r.at("numerics").end(); ++it)
+      if (it->is_object())
+        o << "| " << it.key() << " | " << it->at("wraps") << " | " << it->at("saturations") << " | " << it->at("clamps")
+          << " |\n";
+  }
   o << "\nWarnings: " << (r.at("warnings").empty() ? "none" : "") << "\n";
   for (const auto& w : r.at("warnings")) o << "\n- " << w.get<std::string>() << "\n";
   o << "\nNot modeled by this back end: " << (r.at("not_modeled").empty() ? "nothing" : "");

@@ -30,8 +30,8 @@ check_registry() {
         else (getpath($p[:-1]) == null) or (getpath($p[:-1]) | has($p[-1])) end' "$report" >/dev/null \
       || bad "$report: declared key $k missing"
   done
-  local present  # present -> declared (not inside config or dda_states; a stage's name is *)
-  present=$(jq -r '[paths(true) | select(.[0] != "config" and .[0] != "dda_states")
+  local present  # present -> declared (not inside config, dda_states or numerics, keyed by name; a stage's name is *)
+  present=$(jq -r '[paths(true) | select(.[0] != "config" and .[0] != "dda_states" and .[0] != "numerics")
                     | select(all(.[]; type == "string")) | if .[0] == "stages" then (if length == 3 then ["stages", "*", .[2]] else empty end) else . end
                     | join(".")] | unique[]' "$report")
   for k in $present; do

@@ -1,0 +1,17 @@
+// The warning a run prints when a wrapped EP value was in use (report.json
+// `numerics`): the picture is wrong in the triangles it names, and a wider
+// EP avoids it.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "backends/run_stats.hpp"
+#include "config/params.hpp"
+
+namespace girtd {
+
+// "INPUT: wrapped EP values in use ...", or nothing when there were none.
+std::optional<std::string> wrap_warning(const std::string& input, const RunStats& s, const Params& p);
+
+}  // namespace girtd
