@@ -61,7 +61,10 @@ class DdaDatapath {
   // One EP's adder: W bits, wrapping like the hardware's.
   void add(int i, int64_t step) {
     pix_.v[i] = wrap(pix_.v[i] + step, *fmt_[i]);
-    exact_.v[i] += step;
+    // Formats up to 62 bits: past int64 the shadow sticks at its end (it
+    // differs from the register, so the value still counts as wrapped).
+    if (__builtin_add_overflow(exact_.v[i], step, &exact_.v[i]))
+      exact_.v[i] = step > 0 ? INT64_MAX : INT64_MIN;
   }
 
   const DdaParams& in_;

@@ -14,7 +14,9 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
   const bool fix = params_.walk_fix;
   const bool pipelined_compare = params_.xy_compare_pipelined;
 
+  bool d_tested = false;  // this clock read D1..D3 (wrapped ones are counted then)
   auto d_inside = [&](const DdaRegisters& r) {
+    d_tested = true;
     return norm.inside(r.v[kEpD1]) && norm.inside(r.v[kEpD2]) && norm.inside(r.v[kEpD3]);
   };
   auto in_limits = [&](const DdaRegisters& r) { return r.x >= in.xmin && r.x <= in.xmax; };
@@ -24,6 +26,7 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
   auto dir = [&](const DdaRegisters& r) -> int {
     if (r.x < in.xmin) return +1;
     if (r.x > in.xmax) return -1;
+    d_tested = true;
     for (int e = kEpD1; e <= kEpD3; ++e)
       if (!norm.inside(r.v[e])) return in.ep[e].dx < 0 ? -1 : (in.ep[e].dx > 0 || !fix ? +1 : 0);
     return +1;
@@ -49,8 +52,7 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
     const DdaRegisters r = dp.pix();  // this clock's pixel, before the clock's op
     const DdaRegisters exact = dp.exact();  // the same, had no adder wrapped
     const DdaState now = state;
-    // Every clock tests the edges (D1..D3); a wrapped D puts the pixel on the wrong side.
-    for (int e = kEpD1; e <= kEpD3; ++e) wraps[e] += r.v[e] != exact.v[e];
+    d_tested = false;
     bool emit = false, done = false;
     auto emit_here = [&] {
       emit = true;
@@ -173,6 +175,9 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
         throw std::logic_error("DDA: invalid state");
     }
 
+    // A wrapped D read this clock can put the pixel on the wrong side of an edge.
+    if (d_tested)
+      for (int e = kEpD1; e <= kEpD3; ++e) wraps[e] += r.v[e] != exact.v[e];
     ++st.cycles;
     st.emitted += emit;
     ++st.per_state[static_cast<int>(now)];

@@ -1,7 +1,8 @@
 // Where a run's numbers left their EP's format (GIRTD.md §4), counted per
 // EP: a wrapped value in use (the register kept the low bits of a sum past
-// its range, at a clock that tests it: D1..D3 every clock, R, G, B, T, Z at
-// emission; an edge function that wrapped puts pixels on the wrong side),
+// its range, at a clock that reads it: D1..D3 where the sequencer tests the
+// edges, R, G, B, T, Z at emission; an edge function that wrapped puts
+// pixels on the wrong side),
 // an output clipped to its range at emission (by design, counted for
 // information), and a start value or derivative the preparer clamped.
 // report.json `numerics`.
@@ -15,7 +16,8 @@
 namespace girtd {
 
 struct EpLimits {
-  uint64_t wraps = 0, saturations = 0, clamps = 0;
+  uint64_t wraps = 0;        // D1..D3: clocks that read a wrapped value; the others: pixels emitted with one
+  uint64_t saturations = 0;  // pixels whose output clipped (clamps: the preparer's PreparerCounts)
 };
 
 struct EpNumerics {
@@ -34,7 +36,6 @@ struct EpNumerics {
     for (int i = 0; i < kEpCount; ++i) {
       ep[i].wraps += one.ep[i].wraps;
       ep[i].saturations += one.ep[i].saturations;
-      ep[i].clamps += one.ep[i].clamps;
     }
     if (one.triangles_affected && !first_affected) {
       first_affected = drawn_before + 1;

@@ -14,22 +14,37 @@ std::string widen_key(int ep, const Params& p) {
   return "ep.color.int_bits above " + std::to_string(p.ep_color.int_bits);
 }
 
+// "D1 548 clocks, R 3 pixels" for the EPs with a nonzero count.
+template <typename Count>
+std::string per_ep(Count count, std::set<std::string>& keys, const Params& p) {
+  std::string out;
+  for (int i = 0; i < kEpCount; ++i) {
+    const uint64_t n = count(i);
+    if (!n) continue;
+    out += std::string(out.empty() ? "" : ", ") + kEpNames[i] + " " + std::to_string(n);
+    keys.insert(widen_key(i, p));
+  }
+  return out;
+}
+
 }  // namespace
 
-std::optional<std::string> wrap_warning(const std::string& input, const RunStats& s, const Params& p) {
-  if (!s.dda || s.dda->numerics.wraps() == 0) return std::nullopt;
+std::optional<std::string> limit_warning(const std::string& input, const RunStats& s, const Params& p) {
+  if (!s.dda || s.dda->numerics.triangles_affected == 0) return std::nullopt;
   const EpNumerics& n = s.dda->numerics;
-  std::string eps, keys;
-  std::set<std::string> seen;
-  for (int i = 0; i < kEpCount; ++i) {
-    if (!n.ep[i].wraps) continue;
-    eps += std::string(eps.empty() ? "" : ", ") + kEpNames[i] + " " + std::to_string(n.ep[i].wraps) + " times";
-    if (seen.insert(widen_key(i, p)).second) keys += (keys.empty() ? "" : " and ") + widen_key(i, p);
-  }
-  std::string first = "triangle " + std::to_string(n.first_affected);
+  std::set<std::string> keys;
+  const std::string wraps = per_ep([&](int i) { return n.ep[i].wraps; }, keys, p);
+  const std::string clamps =
+      s.preparer ? per_ep([&](int i) { return s.preparer->clamps[i]; }, keys, p) : std::string();
+  std::string what;
+  if (!wraps.empty()) what = "wrapped EP values in use (" + wraps + "; D: clocks that tested it, others: pixels)";
+  if (!clamps.empty()) what += (what.empty() ? "" : " and ") + std::string("values the preparer clamped (") + clamps + ")";
+  std::string first = "triangle " + std::to_string(n.first_affected) + " drawn";
   if (n.first_affected_line > 0) first += " (line " + std::to_string(n.first_affected_line) + ")";
-  return input + ": wrapped EP values in use (" + eps + ") in " + std::to_string(n.triangles_affected) +
-         " triangle(s), the first " + first + ": the picture is wrong there. A --config file setting " + keys +
+  std::string settings;
+  for (const std::string& k : keys) settings += (settings.empty() ? "" : " and ") + k;
+  return input + ": " + what + " in " + std::to_string(n.triangles_affected) + " triangle(s); first: " + first +
+         ": the picture is wrong there. A --config file setting " + settings +
          " avoids it (on rtl, an RTL variant is built for it)";
 }
 

@@ -1,6 +1,6 @@
-// The warning a run prints when a wrapped EP value was in use (report.json
-// `numerics`): the picture is wrong in the triangles it names, and a wider
-// EP avoids it.
+// The warning a run prints when a wrapped EP value was in use or the
+// preparer clamped a value (report.json `numerics`): the picture is wrong
+// in the triangles it names, and a wider EP avoids it.
 #pragma once
 
 #include <optional>
@@ -11,7 +11,7 @@
 
 namespace girtd {
 
-// "INPUT: wrapped EP values in use ...", or nothing when there were none.
-std::optional<std::string> wrap_warning(const std::string& input, const RunStats& s, const Params& p);
+// "INPUT: wrapped EP values in use ...", or nothing when no triangle was affected.
+std::optional<std::string> limit_warning(const std::string& input, const RunStats& s, const Params& p);
 
 }  // namespace girtd

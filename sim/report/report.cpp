@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <sstream>
 
+#include "dda/dda_params.hpp"
+
 namespace girtd {
 
 using nlohmann::json;
@@ -118,10 +120,10 @@ std::string report_markdown(const json& r) {
   if (r.at("numerics").is_object()) {  // where the EPs' formats were exceeded (dda/ep_numerics.hpp)
     o << "\nNumerics (triangles affected: " << r.at("numerics").at("triangles_affected") << "):\n\n"
       << "| EP | wrapped values in use | outputs clipped | preparer clamps |\n|---|---|---|---|\n";
-    for (auto it = r.at("numerics").begin(); it != r.at("numerics").end(); ++it)
-      if (it->is_object())
-        o << "| " << it.key() << " | " << it->at("wraps") << " | " << it->at("saturations") << " | " << it->at("clamps")
-          << " |\n";
+    for (const char* ep : kEpNames) {
+      const json& e = r.at("numerics").at(ep);
+      o << "| " << ep << " | " << e.at("wraps") << " | " << e.at("saturations") << " | " << e.at("clamps") << " |\n";
+    }
   }
   o << "\nWarnings: " << (r.at("warnings").empty() ? "none" : "") << "\n";
   for (const auto& w : r.at("warnings")) o << "\n- " << w.get<std::string>() << "\n";

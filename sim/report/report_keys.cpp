@@ -32,7 +32,7 @@ ReportKey stage_key(const std::string& leaf, std::string unit, std::string meani
 
 // report.json `numerics` (dda/ep_numerics.hpp), clamps from the preparer.
 json numerics_json(const ReportSource& r) {
-  if (!r.s.dda) return json();
+  if (!r.s.dda || r.ctx.level == "thesis") return json();  // the appendix program's registers are its own
   const EpNumerics& n = r.s.dda->numerics;
   json out;
   for (int i = 0; i < kEpCount; ++i)
@@ -107,13 +107,14 @@ std::vector<ReportKey> make_keys() {
             return states;
           }),
       key("numerics", "count",
-          "per EP (`R` ... `D3`): `wraps` (uses of a wrapped register: D1..D3 on every clock, as the DDA tests the "
-          "edges every clock; R, G, B, T, Z at every pixel emitted. The adders are modular, so a value that wraps "
-          "and steps back is right again and not counted; a counted one changes the picture, and the run warns), "
+          "per EP (`R` ... `D3`): `wraps` (uses of a wrapped register: D1..D3 at every clock that tests the edges, "
+          "R, G, B, T, Z at every pixel emitted. The adders are modular, so a value that wraps and steps back is "
+          "right again and not counted; a counted one changes the picture, and the run warns), "
           "`saturations` (outputs clipped at emission, by design), "
           "`clamps` (start values and derivatives the preparer clamped); `triangles_affected` (drawn with a wrap "
-          "or a clamp) and `first_triangle_affected` (numbered from 1 among those drawn; null: none). The RTL "
-          "does not flag wraps yet (issue: stiff and extreme inputs)",
+          "or a clamp; the run warns for either) and `first_triangle_affected` (numbered from 1 among those drawn, "
+          "over all frames; null: none). null on thesis-level traces (the appendix program's own formats). The "
+          "RTL does not flag wraps yet (issue: stiff and extreme inputs)",
           kGolden | kApprox, [](auto& r) { return numerics_json(r); }),
       key("clock_ns", "ns", "DDA clock period", kEvery, [](auto& r) { return json(r.params.dda_clock_ns); }, true),
       key("modeled_time_s", "s",
