@@ -74,11 +74,10 @@ class DdaDatapath {
   DdaRegisters pix_, aux_;
 };
 
-// An output stage clips (fig. 4.20): the EP's integer part is outside
-// 0..2^out_bits - 1.
+// An output stage (fig. 4.20) does not carry the EP's integer part out as
+// it is: clipped to 0..2^out_bits - 1, or cut to its low bits.
 inline bool output_saturates(int64_t raw, const FixFormat& f) {
-  const int64_t integer = raw >> f.frac_bits;
-  return integer < 0 || integer > (int64_t{1} << f.out_bits) - 1;
+  return saturate_output(raw, f) != (raw >> f.frac_bits);
 }
 
 // A finished run's numerics from the wrapped uses and output clips counted

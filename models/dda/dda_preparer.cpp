@@ -43,7 +43,6 @@ PrepareResult DdaPreparer::prepare(const Triangle& t, const FrameSettings& f, Dd
     ep.v = to_fixed(v, fmt, &c1);
     ep.dx = to_fixed(dx, fmt, &c2);
     ep.dy = to_fixed(dy, fmt, &c3);
-    counts_.clamped_values += c1 + c2 + c3;
     counts_.clamps[size_t(&ep - &out.ep[0])] += c1 + c2 + c3;
     out.clamped = out.clamped || c1 || c2 || c3;
   };

@@ -18,8 +18,12 @@ enum class PrepareResult { kReady, kDegenerate, kOffWindow, kNoLatticeRow };
 
 struct PreparerCounts {
   uint64_t prepared = 0, degenerate = 0, off_window = 0, no_lattice_row = 0;
-  uint64_t clamped_values = 0;  // a start value or derivative that did not fit its EP
-  std::array<uint64_t, kEpCount> clamps{};  // the same, per EP
+  std::array<uint64_t, kEpCount> clamps{};  // start values and derivatives that did not fit the EP
+  uint64_t clamped_values() const {
+    uint64_t n = 0;
+    for (uint64_t c : clamps) n += c;
+    return n;
+  }
 };
 
 class DdaPreparer {

@@ -86,7 +86,6 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
       "|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string& path : sample_traces_at({TraceLevel::kTriangle})) {
     const Trace trace = read_trace(path, std::nullopt, params);
-    if (trace.level != TraceLevel::kTriangle) continue;
     RgbImage reference;
     for (const std::string name : {"reference", "golden"}) {
       auto backend = make_backend(name, params);
@@ -120,7 +119,6 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
                           params.vram_steal_every_ns == 0;
   if (!as_written) md2 += "(skipped: the event model covers the design as written, without the memory options)\n";
   for (const std::string& path : as_written ? sample_traces_at({TraceLevel::kTriangle}) : std::vector<std::string>{}) {
-    if (header_level(path) != TraceLevel::kTriangle) continue;
     const TimingComparison c = compare_timing(params, path);
     const double rtl_ms = double(c.rtl.ticks) * params.base_tick_ns * 1e-6;
     const double model_ms = double(c.model.ticks) * params.base_tick_ns * 1e-6;

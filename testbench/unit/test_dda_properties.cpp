@@ -43,9 +43,9 @@ ErrorScan scan_errors(const Params& p, int triangles, uint32_t seed) {
     FrameSettings f;
     f.q = 1;
     DdaParams d;
-    const uint64_t clamped_before = prep.counts().clamped_values;
+    const uint64_t clamped_before = prep.counts().clamped_values();
     if (prep.prepare(t, f, d) != PrepareResult::kReady) continue;
-    if (prep.counts().clamped_values != clamped_before) continue;  // derivative did not fit: not a rounding case
+    if (prep.counts().clamped_values() != clamped_before) continue;  // derivative did not fit: not a rounding case
     const TriangleSetup s = *setup_triangle(t);
     dda.run(d, [&](const DdaEmit& e) {
       const double x = e.pixel.x, y = e.pixel.y;
@@ -144,8 +144,8 @@ TEST_CASE("DDA error bound is tight: one fraction bit fewer breaks it", "[dda][p
     const Triangle t = random_triangle(rng, 1024);
     FrameSettings f;
     DdaParams d;
-    const uint64_t before = prep.counts().clamped_values;
-    if (prep.prepare(t, f, d) != PrepareResult::kReady || prep.counts().clamped_values != before) continue;
+    const uint64_t before = prep.counts().clamped_values();
+    if (prep.prepare(t, f, d) != PrepareResult::kReady || prep.counts().clamped_values() != before) continue;
     const TriangleSetup s = *setup_triangle(t);
     dda.run(d, [&](const DdaEmit& e) {
       const double steps = 1 + std::abs(e.pixel.x - d.x0) + std::abs(e.pixel.y - d.y0);
