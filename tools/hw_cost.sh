@@ -10,7 +10,7 @@ G="$BUILD/generated/hw"
 H="$ROOT/hw/dda"
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT
-SRC="$G/girtd_pkg.sv $H/dda_ep.sv $H/dda_counter.sv $H/dda_saturate.sv $H/dda_norm.sv $H/dda_nf.sv $H/dda.sv"
+SRC="$G/girtd_pkg.sv $H/dda_ep.sv $H/dda_counter.sv $H/dda_saturate.sv $H/dda_norm.sv $H/dda_nf.sv $H/dda_limits.sv $H/dda.sv"
 SRC="$SRC $ROOT/hw/cost/cost_shell_ep.sv $ROOT/hw/cost/cost_shell_dda.sv"
 pkg() { sed -n "s/.*localparam int $1 = \(.*\);/\1/p" "$G/girtd_pkg.sv" | head -1; }
 width() { echo $(( $(echo "$1" | tr -d ' ') )); }
@@ -53,4 +53,5 @@ row "D EP ($DW bits)" dda_ep "-set W $DW" cost_shell_ep "-set W $DW"
 row "X/Y counter (16 bits)" dda_counter "" "" ""
 row "Norm_Q (one edge)" dda_norm "" "" ""
 row "nf (U decoder + PROMs)" dda_nf "" "" ""
-row "whole DDA (10 EPs + sequencer + nf)" dda "" cost_shell_dda ""
+row "whole DDA (10 EPs + sequencer + nf)" dda "-set WRAP_DETECT 0" cost_shell_dda ""
+row "whole DDA with the wrap detector (simulation aid)" dda "" "" ""

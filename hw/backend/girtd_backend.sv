@@ -27,6 +27,8 @@ module girtd_backend (
     input  logic [girtd_pkg::XY_W-1:0]           x0_i, y0_i, xmin_i, xmax_i, ymax_i,
     input  logic                                 q_zero_i,
     input  logic signed [girtd_pkg::Q_K_W-1:0]   q_k_i,
+    input  logic [2:0]                           hard_edges_i,
+    input  logic                                 clamped_i,
     input  logic signed [girtd_pkg::COLOR_W-1:0] r_i, r_dx_i, r_dy_i, g_i, g_dx_i, g_dy_i, b_i, b_dx_i, b_dy_i,
     input  logic signed [girtd_pkg::T_W-1:0]     t_i, t_dx_i, t_dy_i,
     input  logic signed [girtd_pkg::Z_W-1:0]     z_i, z_dx_i, z_dy_i,
@@ -52,7 +54,10 @@ module girtd_backend (
     output logic [girtd_pkg::COUNT_W-1:0] pixels_generated_o,
     output logic [girtd_pkg::COUNT_W-1:0] written_o, blended_o, z_rejected_o, dropped_o, page_misses_o,
     output logic [girtd_pkg::TICK_COUNT_W-1:0] had_busy_ticks_o, had_vram_wait_ticks_o,
-    output logic [girtd_pkg::FIFO_COUNT_W-1:0] fifo_max_o
+    output logic [girtd_pkg::FIFO_COUNT_W-1:0] fifo_max_o,
+    output logic [8*girtd_pkg::COUNT_W-1:0] wraps_o,  // the DDA's numerics counters (hw/dda/dda_limits.sv)
+    output logic [5*girtd_pkg::COUNT_W-1:0] clips_o,
+    output logic [girtd_pkg::COUNT_W-1:0] triangles_affected_o, first_affected_o
 );
   localparam int CW = girtd_pkg::FIFO_COUNT_W;
 
@@ -76,12 +81,12 @@ module girtd_backend (
   logic [girtd_pkg::DDA_STATE_W-1:0] dda_state;
   dda u_dda (
       .clk_i, .rst_ni, .en_i(dda_en), .walk_fix_i, .pipelined_compare_i, .in_valid_i, .in_ready_o,
-      .x0_i, .y0_i, .xmin_i, .xmax_i, .ymax_i, .q_zero_i, .q_k_i,
+      .x0_i, .y0_i, .xmin_i, .xmax_i, .ymax_i, .q_zero_i, .q_k_i, .hard_edges_i, .clamped_i,
       .r_i, .r_dx_i, .r_dy_i, .g_i, .g_dx_i, .g_dy_i, .b_i, .b_dx_i, .b_dy_i, .t_i, .t_dx_i, .t_dy_i,
       .z_i, .z_dx_i, .z_dy_i, .d1_i, .d1_dx_i, .d1_dy_i, .d2_i, .d2_dx_i, .d2_dy_i, .d3_i, .d3_dx_i, .d3_dy_i,
       .out_valid_o(out_valid), .out_ready_i(!fifo_full), .out_x_o(ox), .out_y_o(oy), .out_r_o(orr),
       .out_g_o(og), .out_b_o(ob), .out_nf_o(onf), .out_z_o(oz), .active_o(dda_active), .stall_o(dda_stall),
-      .state_o(dda_state));
+      .state_o(dda_state), .wraps_o, .clips_o, .triangles_affected_o, .first_affected_o);
 
   logic push;
   logic [girtd_pkg::FIFO_W-1:0] fifo_data;

@@ -10,7 +10,7 @@ module cost_shell_dda (
   localparam int XY = girtd_pkg::XY_W, C = girtd_pkg::COLOR_W, T = girtd_pkg::T_W, Z = girtd_pkg::Z_W,
                  D = girtd_pkg::D_W;
   localparam int K = girtd_pkg::Q_K_W, B = 4 + 5 * XY + K;  // B: where R starts, after q_k
-  localparam int N = 5 * XY + 1 + K + 9 * C + 3 * T + 3 * Z + 9 * D + 4;
+  localparam int N = 5 * XY + 1 + K + 9 * C + 3 * T + 3 * Z + 9 * D + 4 + 3;  // + 3: edge flags, before out_ready
   logic [N-1:0] sr_q;
   always_ff @(posedge clk_i) sr_q <= {sr_q[N-2:0], serial_i};
 
@@ -23,10 +23,11 @@ module cost_shell_dda (
   logic [girtd_pkg::FIFO_NF_W-1:0] onf;
   logic [girtd_pkg::FIFO_Z_W-1:0] oz;
   logic [girtd_pkg::DDA_STATE_W-1:0] state;
-  dda u_dda (
+  dda #(.WRAP_DETECT(1'b0)) u_dda (
       .clk_i, .rst_ni, .en_i(1'b1), .walk_fix_i(sr_q[0]), .pipelined_compare_i(sr_q[1]), .in_valid_i(sr_q[2]),
       .in_ready_o(in_ready), .x0_i(sr_q[3+:XY]), .y0_i(sr_q[3+XY+:XY]), .xmin_i(sr_q[3+2*XY+:XY]),
       .xmax_i(sr_q[3+3*XY+:XY]), .ymax_i(sr_q[3+4*XY+:XY]), .q_zero_i(sr_q[3+5*XY]), .q_k_i(sr_q[4+5*XY+:K]),
+      .hard_edges_i(sr_q[N-4+:3]), .clamped_i(1'b0),
       .r_i(sr_q[B+:C]), .r_dx_i(sr_q[B+C+:C]), .r_dy_i(sr_q[B+2*C+:C]),
       .g_i(sr_q[B+3*C+:C]), .g_dx_i(sr_q[B+4*C+:C]), .g_dy_i(sr_q[B+5*C+:C]),
       .b_i(sr_q[B+6*C+:C]), .b_dx_i(sr_q[B+7*C+:C]), .b_dy_i(sr_q[B+8*C+:C]),
@@ -39,6 +40,6 @@ module cost_shell_dda (
       .d3_dy_i(sr_q[B+9*C+3*T+3*Z+8*D+:D]),
       .out_valid_o(out_valid), .out_ready_i(sr_q[N-1]), .out_x_o(ox), .out_y_o(oy), .out_r_o(orr),
       .out_g_o(og), .out_b_o(ob), .out_nf_o(onf), .out_z_o(oz), .active_o(active), .stall_o(stall),
-      .state_o(state));
+      .state_o(state), .wraps_o(), .clips_o(), .triangles_affected_o(), .first_affected_o());
   always_ff @(posedge clk_i) serial_o <= ^{out_valid, in_ready, active, stall, ox, oy, orr, og, ob, onf, oz, state};
 endmodule

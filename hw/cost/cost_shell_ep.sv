@@ -13,6 +13,6 @@ module cost_shell_ep #(
   logic signed [W-1:0] value, dx;
   always_ff @(posedge clk_i) sr_q <= {sr_q[3*W+O-2:0], serial_i};
   dda_ep #(.W(W)) u_ep (.clk_i, .op_i(sr_q[O-1:0]), .value_i(sr_q[O+:W]), .dx_i(sr_q[O+W+:W]),
-                        .dy_i(sr_q[O+2*W+:W]), .value_o(value), .dx_o(dx));
+                        .dy_i(sr_q[O+2*W+:W]), .value_o(value), .dx_o(dx), .wrapped_o());
   always_ff @(posedge clk_i) serial_o <= ^{value, dx};
 endmodule

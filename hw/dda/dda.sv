@@ -6,7 +6,9 @@
 // pixels leave on a valid/ready port (to the DDA->HAD FIFO) after
 // OUT_LATENCY output-register stages (fig. 4.17). While the last stage holds
 // a pixel the receiver does not take, the whole DDA waits (stall_o).
-module dda (
+module dda #(
+    parameter bit WRAP_DETECT = 1'b1  // the EPs' guard bits and the numerics counters (0: the thesis' datapath alone)
+) (
     input  logic clk_i,
     input  logic rst_ni,
     input  logic en_i,  // clock enable: the DDA acts on enabled base ticks only (one DDA clock each)
@@ -23,6 +25,8 @@ module dda (
     input  logic [girtd_pkg::XY_W-1:0]                   ymax_i,
     input  logic                                         q_zero_i,
     input  logic signed [girtd_pkg::Q_K_W-1:0]          q_k_i,
+    input  logic [2:0]                                   hard_edges_i,  // edge flags: D(i+1) has no fringe
+    input  logic                                         clamped_i,     // the preparer clamped a value (counted only)
     input  logic signed [girtd_pkg::COLOR_W-1:0]         r_i, r_dx_i, r_dy_i,
     input  logic signed [girtd_pkg::COLOR_W-1:0]         g_i, g_dx_i, g_dy_i,
     input  logic signed [girtd_pkg::COLOR_W-1:0]         b_i, b_dx_i, b_dy_i,
@@ -44,7 +48,14 @@ module dda (
     // Observation: a counted DDA clock, a clock lost to back-pressure, the state
     output logic                                 active_o,
     output logic                                 stall_o,
-    output logic [girtd_pkg::DDA_STATE_W-1:0]    state_o
+    output logic [girtd_pkg::DDA_STATE_W-1:0]    state_o,
+    // Numerics (report.json `numerics`, models/dda/ep_numerics.hpp): per EP in
+    // the order R, G, B, T, Z, D1, D2, D3, clocks or pixels that used a
+    // wrapped value; per R, G, B, T, Z pixels whose output clipped
+    output logic [8*girtd_pkg::COUNT_W-1:0]      wraps_o,
+    output logic [5*girtd_pkg::COUNT_W-1:0]      clips_o,
+    output logic [girtd_pkg::COUNT_W-1:0]        triangles_affected_o,
+    output logic [girtd_pkg::COUNT_W-1:0]        first_affected_o  // numbered from 1 among the parameter sets taken (0: none)
 );
   localparam int XY_W = girtd_pkg::XY_W;
   localparam int L = girtd_pkg::OUT_LATENCY;
@@ -60,6 +71,7 @@ module dda (
   logic walk_left_q, walk_left_d, first_q, first_d;
   logic [XY_W-1:0] xmin_q, xmax_q, ymax_q;
   logic q_zero_q;
+  logic [2:0] hard_q;
   logic signed [girtd_pkg::Q_K_W-1:0] q_k_q;
   logic [girtd_pkg::OP_W-1:0] op;
   logic emit, stall;
@@ -70,45 +82,49 @@ module dda (
   logic signed [girtd_pkg::T_W-1:0] t, t_dx_unused;
   logic signed [girtd_pkg::Z_W-1:0] z, z_dx_unused;
   logic signed [girtd_pkg::D_W-1:0] d[3], d_dx[3];
+  logic [7:0] wrapped;  // R, G, B, T, Z, D1, D2, D3
+  localparam int GC = WRAP_DETECT ? girtd_pkg::COLOR_GUARD : 0, GT = WRAP_DETECT ? girtd_pkg::T_GUARD : 0,
+                 GZ = WRAP_DETECT ? girtd_pkg::Z_GUARD : 0, GD = WRAP_DETECT ? girtd_pkg::D_GUARD : 0;
 
   dda_counter #(.W(XY_W), .INC_OP(girtd_pkg::OP_XINC), .DEC_OP(girtd_pkg::OP_XDEC))
       u_x (.clk_i, .op_i(op), .value_i(x0_i), .value_o(x));
   dda_counter #(.W(XY_W), .INC_OP(girtd_pkg::OP_YINC), .CAN_DEC(1'b0))
       u_y (.clk_i, .op_i(op), .value_i(y0_i), .value_o(y));
-  dda_ep #(.W(girtd_pkg::COLOR_W)) u_r (.clk_i, .op_i(op), .value_i(r_i), .dx_i(r_dx_i), .dy_i(r_dy_i),
-                                        .value_o(r), .dx_o(r_dx_unused));
-  dda_ep #(.W(girtd_pkg::COLOR_W)) u_g (.clk_i, .op_i(op), .value_i(g_i), .dx_i(g_dx_i), .dy_i(g_dy_i),
-                                        .value_o(g), .dx_o(g_dx_unused));
-  dda_ep #(.W(girtd_pkg::COLOR_W)) u_b (.clk_i, .op_i(op), .value_i(b_i), .dx_i(b_dx_i), .dy_i(b_dy_i),
-                                        .value_o(b), .dx_o(b_dx_unused));
-  dda_ep #(.W(girtd_pkg::T_W)) u_t (.clk_i, .op_i(op), .value_i(t_i), .dx_i(t_dx_i), .dy_i(t_dy_i),
-                                    .value_o(t), .dx_o(t_dx_unused));
-  dda_ep #(.W(girtd_pkg::Z_W)) u_z (.clk_i, .op_i(op), .value_i(z_i), .dx_i(z_dx_i), .dy_i(z_dy_i),
-                                    .value_o(z), .dx_o(z_dx_unused));
-  dda_ep #(.W(girtd_pkg::D_W)) u_d1 (.clk_i, .op_i(op), .value_i(d1_i), .dx_i(d1_dx_i), .dy_i(d1_dy_i),
-                                     .value_o(d[0]), .dx_o(d_dx[0]));
-  dda_ep #(.W(girtd_pkg::D_W)) u_d2 (.clk_i, .op_i(op), .value_i(d2_i), .dx_i(d2_dx_i), .dy_i(d2_dy_i),
-                                     .value_o(d[1]), .dx_o(d_dx[1]));
-  dda_ep #(.W(girtd_pkg::D_W)) u_d3 (.clk_i, .op_i(op), .value_i(d3_i), .dx_i(d3_dx_i), .dy_i(d3_dy_i),
-                                     .value_o(d[2]), .dx_o(d_dx[2]));
+  dda_ep #(.W(girtd_pkg::COLOR_W), .G(GC)) u_r (.clk_i, .op_i(op), .value_i(r_i), .dx_i(r_dx_i), .dy_i(r_dy_i),
+                                        .value_o(r), .dx_o(r_dx_unused), .wrapped_o(wrapped[0]));
+  dda_ep #(.W(girtd_pkg::COLOR_W), .G(GC)) u_g (.clk_i, .op_i(op), .value_i(g_i), .dx_i(g_dx_i), .dy_i(g_dy_i),
+                                        .value_o(g), .dx_o(g_dx_unused), .wrapped_o(wrapped[1]));
+  dda_ep #(.W(girtd_pkg::COLOR_W), .G(GC)) u_b (.clk_i, .op_i(op), .value_i(b_i), .dx_i(b_dx_i), .dy_i(b_dy_i),
+                                        .value_o(b), .dx_o(b_dx_unused), .wrapped_o(wrapped[2]));
+  dda_ep #(.W(girtd_pkg::T_W), .G(GT)) u_t (.clk_i, .op_i(op), .value_i(t_i), .dx_i(t_dx_i), .dy_i(t_dy_i),
+                                    .value_o(t), .dx_o(t_dx_unused), .wrapped_o(wrapped[3]));
+  dda_ep #(.W(girtd_pkg::Z_W), .G(GZ)) u_z (.clk_i, .op_i(op), .value_i(z_i), .dx_i(z_dx_i), .dy_i(z_dy_i),
+                                    .value_o(z), .dx_o(z_dx_unused), .wrapped_o(wrapped[4]));
+  dda_ep #(.W(girtd_pkg::D_W), .G(GD)) u_d1 (.clk_i, .op_i(op), .value_i(d1_i), .dx_i(d1_dx_i), .dy_i(d1_dy_i),
+                                     .value_o(d[0]), .dx_o(d_dx[0]), .wrapped_o(wrapped[5]));
+  dda_ep #(.W(girtd_pkg::D_W), .G(GD)) u_d2 (.clk_i, .op_i(op), .value_i(d2_i), .dx_i(d2_dx_i), .dy_i(d2_dy_i),
+                                     .value_o(d[1]), .dx_o(d_dx[1]), .wrapped_o(wrapped[6]));
+  dda_ep #(.W(girtd_pkg::D_W), .G(GD)) u_d3 (.clk_i, .op_i(op), .value_i(d3_i), .dx_i(d3_dx_i), .dy_i(d3_dy_i),
+                                     .value_o(d[2]), .dx_o(d_dx[2]), .wrapped_o(wrapped[7]));
 
   // ---- Coverage, nf and the output stages ----
   logic [2:0] d_inside;
   logic [girtd_pkg::NF_W-1:0] n[3];
   for (genvar i = 0; i < 3; i++) begin : g_norm
     dda_norm #(.W(girtd_pkg::D_W), .FRAC(girtd_pkg::D_FRAC), .NF(girtd_pkg::NORM_FRAC))
-        u_norm (.d_i(d[i]), .q_zero_i(q_zero_q), .q_k_i(q_k_q), .inside_o(d_inside[i]), .n_o(n[i]));
+        u_norm (.d_i(d[i]), .q_zero_i(q_zero_q || hard_q[i]), .q_k_i(q_k_q), .inside_o(d_inside[i]), .n_o(n[i]));
   end
 
   logic [girtd_pkg::COLOR_OUT-1:0] r8, g8, b8;
   logic [girtd_pkg::T_OUT-1:0] t8;
   logic [girtd_pkg::Z_OUT-1:0] z16;
   logic [girtd_pkg::NF_W-1:0] nf;
-  dda_saturate #(.W(girtd_pkg::COLOR_W), .FRAC(girtd_pkg::COLOR_FRAC), .OUT(girtd_pkg::COLOR_OUT)) u_sat_r (.value_i(r), .out_o(r8));
-  dda_saturate #(.W(girtd_pkg::COLOR_W), .FRAC(girtd_pkg::COLOR_FRAC), .OUT(girtd_pkg::COLOR_OUT)) u_sat_g (.value_i(g), .out_o(g8));
-  dda_saturate #(.W(girtd_pkg::COLOR_W), .FRAC(girtd_pkg::COLOR_FRAC), .OUT(girtd_pkg::COLOR_OUT)) u_sat_b (.value_i(b), .out_o(b8));
-  dda_saturate #(.W(girtd_pkg::T_W), .FRAC(girtd_pkg::T_FRAC), .OUT(girtd_pkg::T_OUT)) u_sat_t (.value_i(t), .out_o(t8));
-  dda_saturate #(.W(girtd_pkg::Z_W), .FRAC(girtd_pkg::Z_FRAC), .OUT(girtd_pkg::Z_OUT)) u_sat_z (.value_i(z), .out_o(z16));
+  logic [4:0] clipped;  // R, G, B, T, Z outputs clipped to their range
+  dda_saturate #(.W(girtd_pkg::COLOR_W), .FRAC(girtd_pkg::COLOR_FRAC), .OUT(girtd_pkg::COLOR_OUT)) u_sat_r (.value_i(r), .out_o(r8), .clipped_o(clipped[0]));
+  dda_saturate #(.W(girtd_pkg::COLOR_W), .FRAC(girtd_pkg::COLOR_FRAC), .OUT(girtd_pkg::COLOR_OUT)) u_sat_g (.value_i(g), .out_o(g8), .clipped_o(clipped[1]));
+  dda_saturate #(.W(girtd_pkg::COLOR_W), .FRAC(girtd_pkg::COLOR_FRAC), .OUT(girtd_pkg::COLOR_OUT)) u_sat_b (.value_i(b), .out_o(b8), .clipped_o(clipped[2]));
+  dda_saturate #(.W(girtd_pkg::T_W), .FRAC(girtd_pkg::T_FRAC), .OUT(girtd_pkg::T_OUT)) u_sat_t (.value_i(t), .out_o(t8), .clipped_o(clipped[3]));
+  dda_saturate #(.W(girtd_pkg::Z_W), .FRAC(girtd_pkg::Z_FRAC), .OUT(girtd_pkg::Z_OUT)) u_sat_z (.value_i(z), .out_o(z16), .clipped_o(clipped[4]));
   // T = 255 at the output means exactly 1.0.
   localparam logic [girtd_pkg::NF_W-1:0] NF_ONE = girtd_pkg::NF_W'(1) << girtd_pkg::NORM_FRAC;
   dda_nf u_nf (.n1_i(n[0]), .n2_i(n[1]), .n3_i(n[2]), .t_i(t8 == '1 ? NF_ONE : girtd_pkg::NF_W'(t8)), .nf_o(nf));
@@ -251,6 +267,7 @@ module dda (
       ymax_q <= ymax_i;
       q_zero_q <= q_zero_i;
       q_k_q <= q_k_i;
+      hard_q <= hard_edges_i;
     end
   end
 
@@ -281,6 +298,28 @@ module dda (
   assign active_o = state_q != S_IDLE && !hold;
   assign stall_o = en_i && stall && state_q != S_IDLE;
   assign state_o = state_q;
+
+  // ---- Numerics: the clocks that read D1..D3 (as models/dda counts them:
+  // every test of the edges within the X limits) and the emitted pixels ----
+  logic d_read, tri_end, t_is_one;
+  assign d_read = !hold && in_limits && ((state_q == S_CHECK && !y_past_end) || state_q == S_WALK ||
+                                         state_q == S_RIGHT || state_q == S_LEFT || state_q == S_RUN);
+  assign tri_end = !hold && state_q != S_IDLE && state_d == S_IDLE;
+  assign t_is_one = t[girtd_pkg::T_W-1:girtd_pkg::T_FRAC] == (girtd_pkg::T_W - girtd_pkg::T_FRAC)'(256);  // 1.0: not a clip
+  if (WRAP_DETECT) begin : g_limits
+    dda_limits u_limits (
+        .clk_i, .rst_ni, .load_i(op == girtd_pkg::OP_LOAD), .clamped_i, .end_i(tri_end),
+        .wrap_use_i({{3{d_read}} & wrapped[7:5], {5{emit}} & wrapped[4:0]}),
+        .clip_i({5{emit}} & {clipped[4], clipped[3] && !t_is_one, clipped[2:0]}),
+        .wraps_o, .clips_o, .triangles_affected_o, .first_affected_o);
+  end else begin : g_no_limits
+    assign wraps_o = '0;
+    assign clips_o = '0;
+    assign triangles_affected_o = '0;
+    assign first_affected_o = '0;
+    logic unused_limits;
+    assign unused_limits = ^{d_read, tri_end, t_is_one, wrapped, clipped, clamped_i};
+  end
 
 `ifdef GIRTD_COVER
   // Functional coverage (check build, verilator --coverage): every sequencer

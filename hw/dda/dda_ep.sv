@@ -1,8 +1,14 @@
 // One adder element processor (fig. 4.3, 4.22): value, d/dx, d/dy and AUX
 // registers around one W-bit adder that wraps. Every EP performs the same
 // operation each clock.
+//
+// The value register carries G guard bits above the hardware's W (the wrap
+// detector, not part of the thesis' design): the low W bits are exactly the
+// W-bit register's, and wrapped_o says they differ from the true sum (the
+// W + G-bit one), the count report.json's `numerics` keeps.
 module dda_ep #(
-    parameter int W = girtd_pkg::COLOR_W
+    parameter int W = girtd_pkg::COLOR_W,
+    parameter int G = 0
 ) (
     input  logic                clk_i,
     input  logic [girtd_pkg::OP_W-1:0] op_i,
@@ -10,17 +16,20 @@ module dda_ep #(
     input  logic signed [W-1:0] dx_i,
     input  logic signed [W-1:0] dy_i,
     output logic signed [W-1:0] value_o,
-    output logic signed [W-1:0] dx_o
+    output logic signed [W-1:0] dx_o,
+    output logic                wrapped_o
 );
-  logic signed [W-1:0] value_q, value_d, dx_q, dy_q, aux_q;
+  localparam int X = W + G;
+  logic signed [X-1:0] value_q, value_d, aux_q;
+  logic signed [W-1:0] dx_q, dy_q;
 
   always_comb begin
     value_d = value_q;
     unique case (op_i)
-      girtd_pkg::OP_LOAD:    value_d = value_i;
-      girtd_pkg::OP_XINC:    value_d = value_q + dx_q;
-      girtd_pkg::OP_XDEC:    value_d = value_q - dx_q;
-      girtd_pkg::OP_YINC:    value_d = value_q + dy_q;
+      girtd_pkg::OP_LOAD:    value_d = X'(value_i);
+      girtd_pkg::OP_XINC:    value_d = value_q + X'(dx_q);
+      girtd_pkg::OP_XDEC:    value_d = value_q - X'(dx_q);
+      girtd_pkg::OP_YINC:    value_d = value_q + X'(dy_q);
       girtd_pkg::OP_RESTORE: value_d = aux_q;
       default:               value_d = value_q;
     endcase
@@ -35,6 +44,7 @@ module dda_ep #(
     if (op_i == girtd_pkg::OP_SAVE) aux_q <= value_q;
   end
 
-  assign value_o = value_q;
+  assign value_o = value_q[W-1:0];
   assign dx_o = dx_q;
+  assign wrapped_o = value_q[X-1:W-1] != {(G + 1){value_q[W-1]}};
 endmodule

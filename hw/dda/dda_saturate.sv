@@ -9,7 +9,8 @@ module dda_saturate #(
     /* verilator lint_off UNUSEDSIGNAL */  // the fraction bits are truncated away
     input  logic signed [W-1:0] value_i,
     /* verilator lint_on UNUSEDSIGNAL */
-    output logic [OUT-1:0]      out_o
+    output logic [OUT-1:0]      out_o,
+    output logic                clipped_o  // the output is not the integer part (for the numerics count)
 );
   localparam int INT_W = W - FRAC;
   logic signed [INT_W-1:0] integer_part;
@@ -21,7 +22,9 @@ module dda_saturate #(
       else if (integer_part > INT_W'((1 << OUT) - 1)) out_o = '1;
       else out_o = integer_part[OUT-1:0];
     end
+    assign clipped_o = integer_part < 0 || integer_part > INT_W'((1 << OUT) - 1);
   end else begin : g_truncate
     assign out_o = integer_part[OUT-1:0];
+    assign clipped_o = integer_part < 0;  // a negative integer part read as unsigned
   end
 endmodule

@@ -26,9 +26,13 @@ std::optional<TriangleSetup> setup_triangle(const Triangle& t) {
   };
   double pv = pv_of(s.v);
   if (pv == 0 || !std::isfinite(pv)) return std::nullopt;
+  for (int i = 0; i < 3; ++i) s.interior[i] = (t.interior_edges >> i) & 1;
   if (pv > 0) {  // clockwise on screen: reorder (§3 winding normalization)
     std::swap(s.v[1], s.v[2]);
     pv = -pv;
+    s.reordered = true;
+    // The edges now run v0 -> v2 -> v1 -> v0: the written edges 2, 1, 0.
+    s.interior = {s.interior[2], s.interior[1], s.interior[0]};
   }
   for (int i = 0; i < 3; ++i) {
     const Vertex& p = s.v[i];
@@ -103,6 +107,29 @@ std::optional<StartPoint> select_start_point(const TriangleSetup& s, const Windo
   // A window lying wholly inside the triangle has its corner inside (tested
   // above), so no candidate means no overlap.
   return best;
+}
+
+SharedEdge shared_edge(const TriangleSetup& s, int i, const Window& w) {
+  const Vertex& u = s.v[i];
+  const Vertex& v = s.v[(i + 1) % 3];
+  const bool forward = u.y < v.y || (u.y == v.y && u.x < v.x);
+  SharedEdge e;
+  e.p = forward ? u : v;
+  const Vertex& q = forward ? v : u;
+  e.sign = forward ? 1 : -1;
+  e.nx = q.y - e.p.y;
+  e.ny = e.p.x - q.x;
+  e.len = std::sqrt(e.nx * e.nx + e.ny * e.ny);
+  e.a = e.nx / e.len;
+  e.b = e.ny / e.len;
+  // The window's middle projected onto the segment: the fixed-point walk's
+  // error grows with the distance from here, and both sides pick the same point.
+  const double cx = 0.5 * (w.x0 + w.x1) - e.p.x, cy = 0.5 * (w.y0 + w.y1) - e.p.y;
+  const double dx = q.x - e.p.x, dy = q.y - e.p.y;
+  const double t = std::clamp((cx * dx + cy * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+  e.ref_x = static_cast<int>(std::clamp(std::round(e.p.x + t * dx), -2e9, 2e9));
+  e.ref_y = static_cast<int>(std::clamp(std::round(e.p.y + t * dy), -2e9, 2e9));
+  return e;
 }
 
 double norm_q(double d, double q) {

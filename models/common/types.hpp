@@ -17,6 +17,11 @@ struct Vertex {
 struct Triangle {
   std::array<Vertex, 3> v;
   int source_line = 0;  // where it came from, for error messages
+  // Bit i: the edge from v[i] to v[(i + 1) % 3] is shared with a neighbour
+  // of the same surface (a triangulator diagonal or a mesh-interior edge),
+  // so it needs no antialiasing fringe (thesis 5.2.4's invisible edges).
+  uint8_t interior_edges = 0;
+  int surface = -1;  // the front end's surface id (-1: not known)
 };
 
 // Inclusive pixel window (Xjmin..Xjmax, Yjmin..Yjmax of §3).

@@ -92,6 +92,7 @@ Params build(const ConfigLayers& layers) {
     if (p.ep_t.out_bits != 8) r.fail("ep.t.out_bits", "must be 8: the HAD takes 8-bit T");
     if (p.ep_z.out_bits != 16) r.fail("ep.z.out_bits", "must be 16: the VRAM holds 16-bit Z");
     p.xy_bits = r.integer("ep.xy_bits", 11, 32);  // X, Y up to 1023 and a sign
+    p.wrap_guard_bits = r.integer("ep.wrap_guard_bits", 1, 32);
     p.norm_frac_bits = r.integer("nf.norm_frac_bits", 8, 8);  // the HAD multiplies 8 x 8 bits
     p.prom_frac_bits = r.integer("nf.prom_frac_bits", 1, 8);
     if (p.ep_d.frac_bits < p.norm_frac_bits)
@@ -103,6 +104,14 @@ Params build(const ConfigLayers& layers) {
     p.xy_compare_pipelined = r.flag("dda.xy_compare_pipelined");
     p.walk_fix = r.flag("dda.walk_fix");
     p.output_latency_clocks = r.integer("dda.output_latency_clocks", 1, 8);
+
+    const std::string far = r.text("preparer.far_edges");
+    if (far != "as_computed" && far != "constant") r.fail("preparer.far_edges", "must be \"as_computed\" or \"constant\"");
+    p.far_edges_constant = far == "constant";
+    const std::string fill = r.text("preparer.fill_rule");
+    if (fill != "inclusive" && fill != "top_left") r.fail("preparer.fill_rule", "must be \"inclusive\" or \"top_left\"");
+    p.fill_top_left = fill == "top_left";
+    p.edge_flags = r.flag("preparer.edge_flags");
 
     const std::string omn = r.text("had.one_minus_nf");
     if (omn == "exact") p.one_minus_nf = OneMinusNf::kExact;

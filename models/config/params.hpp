@@ -3,6 +3,7 @@
 // default of its own, so a width or timing is never written twice.
 #pragma once
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <vector>
@@ -33,6 +34,11 @@ struct Params {
   FixFormat ep_z;
   FixFormat ep_d;      // edge distances D1..D3 (no output saturation)
   int xy_bits;
+  // The wrap detector (a simulation aid, golden and RTL alike): each EP's
+  // register is carried with this many guard bits above its width (at most
+  // 64 bits in all), and a value whose guard bits are not its sign wrapped.
+  int wrap_guard_bits;
+  int guard_bits(const FixFormat& f) const { return std::min(wrap_guard_bits, 64 - f.total_bits()); }
 
   int norm_frac_bits;  // n_i and nf fraction bits (1.8)
   int prom_frac_bits;  // operand fraction bits of the U >= 2 product table (1.4)
@@ -41,6 +47,12 @@ struct Params {
   bool xy_compare_pipelined;  // TTL option: +1 clock at every run end
   bool walk_fix;              // robust start/walk (GIRTD.md §11); false = DDApix as written
   int output_latency_clocks;  // fig. 4.17 output registers
+
+  // The preparer's fixes for the design's limits (config `preparer`; all off
+  // in the thesis' design, on in config/presets/robust.json).
+  bool far_edges_constant;  // an edge whose line misses the pixel box goes out as a constant: no D wraps
+  bool fill_top_left;       // a shared edge is evaluated alike from both sides; its ties go to one side
+  bool edge_flags;          // a triangle's interior edges (Triangle::interior_edges) get no AA fringe
 
   OneMinusNf one_minus_nf;
   double had_access_ns;

@@ -46,7 +46,8 @@ json rtl_build_values(const Params& p) {
             {"t", format_json(p.ep_t, true)},
             {"z", format_json(p.ep_z, true)},
             {"d", format_json(p.ep_d, false)},
-            {"xy_bits", p.xy_bits}}},
+            {"xy_bits", p.xy_bits},
+            {"wrap_guard_bits", p.wrap_guard_bits}}},
           {"nf", {{"norm_frac_bits", p.norm_frac_bits}, {"prom_frac_bits", p.prom_frac_bits}}},
           {"dda", {{"output_latency_clocks", p.output_latency_clocks}}},
           {"fifo", {{"max_depth", p.fifo_max_depth}}},
@@ -96,6 +97,7 @@ std::string sv_package_text(const Params& p) {
     const std::string n = e.name;
     o << param((n + "_FRAC").c_str(), e.f.frac_bits) << param((n + "_W").c_str(), e.f.total_bits());
     if (e.f.out_bits > 0) o << param((n + "_OUT").c_str(), e.f.out_bits);
+    o << param((n + "_GUARD").c_str(), p.guard_bits(e.f), "wrap detector");
   }
   o << param("XY_W", p.xy_bits) << param("NORM_FRAC", p.norm_frac_bits) << param("NF_W", p.norm_frac_bits + 1, "1.8: 256 is 1.0")
     << param("PROM_FRAC", p.prom_frac_bits) << param("OUT_LATENCY", p.output_latency_clocks)

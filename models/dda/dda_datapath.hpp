@@ -26,6 +26,7 @@ class DdaDatapath {
     fmt_[kEpR] = fmt_[kEpG] = fmt_[kEpB] = &p.ep_color;
     fmt_[kEpT] = &p.ep_t;
     fmt_[kEpZ] = &p.ep_z;
+    for (int i = 0; i < kEpCount; ++i) detect_bits_[i] = fmt_[i]->total_bits() + p.guard_bits(*fmt_[i]);
     pix_.x = in.x0;
     pix_.y = in.y0;
     for (int i = 0; i < kEpCount; ++i) pix_.v[i] = wrap(in.ep[i].v, *fmt_[i]);
@@ -40,8 +41,8 @@ class DdaDatapath {
     pix_.y = static_cast<int>(wrap_to_bits(pix_.y + 1, xy_bits_));
     for (int i = 0; i < kEpCount; ++i) add(i, in_.ep[i].dy);
   }
-  // The same registers computed without wrapping: where they differ, the
-  // hardware holds a wrapped value. (The adders are modular, so a value
+  // The same registers with the wrap detector's guard bits (ep.wrap_guard_bits;
+  // hw/dda/dda_ep.sv): where they differ, the hardware holds a wrapped value. (The adders are modular, so a value
   // that wraps and steps back is right again: only a wrapped value in use
   // changes the picture.)
   const DdaRegisters& exact() const { return exact_; }
@@ -61,16 +62,15 @@ class DdaDatapath {
   // One EP's adder: W bits, wrapping like the hardware's.
   void add(int i, int64_t step) {
     pix_.v[i] = wrap(pix_.v[i] + step, *fmt_[i]);
-    // Formats up to 62 bits: past int64 the shadow sticks at its end (it
-    // differs from the register, so the value still counts as wrapped).
-    if (__builtin_add_overflow(exact_.v[i], step, &exact_.v[i]))
-      exact_.v[i] = step > 0 ? INT64_MAX : INT64_MIN;
+    const uint64_t sum = static_cast<uint64_t>(exact_.v[i]) + static_cast<uint64_t>(step);  // modular, as the RTL's
+    exact_.v[i] = wrap_to_bits(static_cast<int64_t>(sum), detect_bits_[i]);
   }
 
   const DdaParams& in_;
   int xy_bits_;
   DdaRegisters exact_, exact_aux_;
   const FixFormat* fmt_[kEpCount];
+  int detect_bits_[kEpCount];  // register width + guard bits
   DdaRegisters pix_, aux_;
 };
 

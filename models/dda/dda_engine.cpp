@@ -10,14 +10,19 @@ namespace girtd {
 
 DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const ClockProbe& probe) const {
   DdaDatapath dp(params_, in);
-  const NormUnit norm(params_.ep_d, params_.norm_frac_bits, in.q);
+  // One Norm unit per edge: an interior edge's (edge flags) has no fringe.
+  auto norm_unit = [&](int e) {
+    return NormUnit(params_.ep_d, params_.norm_frac_bits, (in.hard_edges >> e) & 1 ? 0.0 : in.q);
+  };
+  const std::array<NormUnit, 3> norm{norm_unit(0), norm_unit(1), norm_unit(2)};
+  auto edge_inside = [&](const DdaRegisters& r, int ep) { return norm[ep - kEpD1].inside(r.v[ep]); };
   const bool fix = params_.walk_fix;
   const bool pipelined_compare = params_.xy_compare_pipelined;
 
   bool d_tested = false;  // this clock read D1..D3 (wrapped ones are counted then)
   auto d_inside = [&](const DdaRegisters& r) {
     d_tested = true;
-    return norm.inside(r.v[kEpD1]) && norm.inside(r.v[kEpD2]) && norm.inside(r.v[kEpD3]);
+    return edge_inside(r, kEpD1) && edge_inside(r, kEpD2) && edge_inside(r, kEpD3);
   };
   auto in_limits = [&](const DdaRegisters& r) { return r.x >= in.xmin && r.x <= in.xmax; };
   auto inside = [&](const DdaRegisters& r) { return in_limits(r) && d_inside(r); };
@@ -28,7 +33,7 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
     if (r.x > in.xmax) return -1;
     d_tested = true;
     for (int e = kEpD1; e <= kEpD3; ++e)
-      if (!norm.inside(r.v[e])) return in.ep[e].dx < 0 ? -1 : (in.ep[e].dx > 0 || !fix ? +1 : 0);
+      if (!edge_inside(r, e)) return in.ep[e].dx < 0 ? -1 : (in.ep[e].dx > 0 || !fix ? +1 : 0);
     return +1;
   };
   auto can_step = [&](const DdaRegisters& r, int s) { return s > 0 ? r.x < in.xmax : r.x > in.xmin; };
@@ -67,9 +72,9 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
       e.raw = r.v;
       e.cycle = st.cycles + static_cast<uint64_t>(params_.output_latency_clocks);
       const int t = t_operand(saturate_output(r.v[kEpT], params_.ep_t));
-      e.pixel = output_pixel(r, params_,
-                             compute_nf(norm.norm(r.v[kEpD1]), norm.norm(r.v[kEpD2]), norm.norm(r.v[kEpD3]), t,
-                                        params_.prom_frac_bits));
+      const int n1 = norm[0].norm(r.v[kEpD1]), n2 = norm[1].norm(r.v[kEpD2]), n3 = norm[2].norm(r.v[kEpD3]);
+      e.pixel = output_pixel(r, params_, compute_nf(n1, n2, n3, t, params_.prom_frac_bits));
+      e.covered = n1 == kNfOne && n2 == kNfOne && n3 == kNfOne;
       sink(e);
     };
 

@@ -23,12 +23,14 @@ struct DdaParams {
   int xmin = 0, xmax = 0, ymax = 0;
   std::array<EpInit, kEpCount> ep{};
   double q = 1.0;  // Norm width: 0 or 2^k (the Norm unit is a shift)
+  uint8_t hard_edges = 0;  // bit i: D(i+1) has no fringe, its Norm is as at Q = 0 (edge flags)
   int source_line = 0;
   bool clamped = false;  // the preparer clamped a value to its EP (not in traces)
+  int layer = -1;        // seam_layer() of the triangle (not hardware, not in traces: for counting seams)
 
   bool operator==(const DdaParams& o) const {
     return x0 == o.x0 && y0 == o.y0 && xmin == o.xmin && xmax == o.xmax && ymax == o.ymax &&
-           ep == o.ep && q == o.q;
+           ep == o.ep && q == o.q && hard_edges == o.hard_edges;
   }
 };
 

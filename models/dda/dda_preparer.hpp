@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "common/triangle_setup.hpp"
 #include "common/types.hpp"
 #include "config/params.hpp"
 #include "dda/dda_params.hpp"
@@ -19,6 +20,7 @@ enum class PrepareResult { kReady, kDegenerate, kOffWindow, kNoLatticeRow };
 struct PreparerCounts {
   uint64_t prepared = 0, degenerate = 0, off_window = 0, no_lattice_row = 0;
   std::array<uint64_t, kEpCount> clamps{};  // start values and derivatives that did not fit the EP
+  uint64_t constant_edges = 0;  // preparer.far_edges constant: edges sent as constants
   uint64_t clamped_values() const {
     uint64_t n = 0;
     for (uint64_t c : clamps) n += c;
@@ -35,6 +37,16 @@ class DdaPreparer {
   const PreparerCounts& counts() const { return counts_; }
 
  private:
+  struct EdgeRaw {
+    int64_t v = 0, dx = 0, dy = 0;
+  };
+  enum class BoxSide { kInside, kOutside, kCrosses };
+  EdgeRaw edge_raw(const EdgeEquation& e, int x0, int y0) const;
+  EdgeRaw shared_edge_raw(const SharedEdge& e, int x0, int y0) const;
+  static bool owns_ties(const EdgeRaw& d);
+  static BoxSide edge_over_box(const EdgeRaw& d, int x0, int y0, const PixelBox& box, int64_t q_raw);
+  bool fit(int64_t raw, int64_t& reg) const;  // clamps into the D format; false when it did not fit
+
   const Params& params_;
   PreparerCounts counts_;
 };

@@ -6,6 +6,7 @@
 
 #include "common/triangle_setup.hpp"
 #include "frontend/depth_clip.hpp"
+#include "frontend/interior_edges.hpp"
 #include "frontend/polygon_shape.hpp"
 #include "frontend/vertex_lighting.hpp"
 #include "frontend/vertex_normals.hpp"
@@ -157,6 +158,7 @@ Triangulated FrontEndStages::triangulate(const ScreenPolygon& p) {
     SortableTriangle st;
     st.id = (static_cast<uint64_t>(p.source) << 32) | k;
     st.ft.tri.source_line = frame_->polygons[p.source].source_line;
+    st.ft.tri.surface = frame_->polygons[p.source].surface;
     for (int e = 0; e < 3; ++e) {
       st.ft.tri.v[e] = p.screen[static_cast<size_t>(ti.v[e])];
       st.ft.made_edge[e] = ti.made_edge[e];
@@ -192,6 +194,7 @@ std::vector<FrontTriangle> FrontEndStages::sort(const std::vector<SortableTriang
   std::vector<FrontTriangle> sorted;
   sorted.reserve(order.size());
   for (const SortItem& s : order) sorted.push_back(frame_triangles[static_cast<size_t>(s.index)].ft);
+  mark_interior_edges(sorted);
   counts_.triangles_out += sorted.size();
   return sorted;
 }

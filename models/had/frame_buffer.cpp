@@ -10,11 +10,13 @@ FrameBuffer::FrameBuffer(int width, int height, uint16_t z_clear)
   rgb_[0].assign(n, Rgb{});
   rgb_[1].assign(n, Rgb{});
   z_.assign(n, z_clear);
+  blender_.assign(n, -1);
 }
 
 void FrameBuffer::clear_back(Rgb background) {
   std::fill(rgb_[front_ ^ 1].begin(), rgb_[front_ ^ 1].end(), background);
   std::fill(z_.begin(), z_.end(), z_clear_);
+  std::fill(blender_.begin(), blender_.end(), -1);
 }
 
 std::vector<uint8_t> FrameBuffer::shown_bytes() const {

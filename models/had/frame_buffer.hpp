@@ -27,6 +27,9 @@ class FrameBuffer {
   uint16_t& z(int x, int y) { return z_[index(x, y)]; }
   const Rgb& shown_rgb(int x, int y) const { return rgb_[front_][index(x, y)]; }
   uint16_t z_at(int x, int y) const { return z_[index(x, y)]; }
+  // Not video memory: the layer (seam_layer) that last blended each pixel this frame
+  // (-1: none), for counting seams (Had::update).
+  int32_t& last_blender(int x, int y) { return blender_[index(x, y)]; }
 
   // Raw RGB bytes of the shown buffer, row-major (what image_sha256 hashes).
   std::vector<uint8_t> shown_bytes() const;
@@ -39,6 +42,7 @@ class FrameBuffer {
   int front_ = 0;
   std::vector<Rgb> rgb_[2];
   std::vector<uint16_t> z_;
+  std::vector<int32_t> blender_;
 };
 
 }  // namespace girtd

@@ -8,7 +8,7 @@ uint8_t blend_channel(uint8_t c, uint8_t cb, int nf, OneMinusNf rule) {
   return static_cast<uint8_t>(sum > 255 ? 255 : sum);
 }
 
-HadOutcome Had::update(const Pixel& p) {
+HadOutcome Had::update(const Pixel& p, int layer, bool covered) {
   // Order as in HadPix: screen test, depth test, then nf.
   if (p.x < 0 || p.y < 0 || p.x >= screen_width_ || p.y >= screen_height_) {
     ++counts_.dropped;
@@ -38,6 +38,11 @@ HadOutcome Had::update(const Pixel& p) {
   cb.g = blend_channel(p.g, cb.g, p.nf, rule_);
   cb.b = blend_channel(p.b, cb.b, p.nf, rule_);
   ++counts_.blended;
+  if (layer >= 0) {  // the plane holds layer << 1 | covered
+    int32_t& last = fb_.last_blender(p.x, p.y);
+    counts_.reblended += last >= 0 && (last >> 1) == layer && (covered || (last & 1));
+    last = layer << 1 | int32_t{covered};
+  }
   return HadOutcome::kBlended;
 }
 

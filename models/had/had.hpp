@@ -15,6 +15,13 @@ enum class HadOutcome { kWritten, kBlended, kZRejected, kDropped };
 
 struct HadCounts {
   uint64_t written = 0, blended = 0, z_rejected = 0, dropped = 0;
+  // Not an outcome: seams. Blends of a pixel its layer (a surface's faces
+  // turned the same way) had already blended this frame, where one of the two
+  // covered the pixel (inside its triangle, not in a fringe): a shared edge
+  // drawn twice, or a neighbour's fringe over a triangle. Two fringes over
+  // each other outside a silhouette's corner are per-edge antialiasing, not
+  // a seam, and not counted.
+  uint64_t reblended = 0;
   uint64_t total() const { return written + blended + z_rejected + dropped; }
 };
 
@@ -38,7 +45,9 @@ class Had {
   // nf < 1 is dropped instead of blended.
   void set_drop_partial(bool drop) { drop_partial_ = drop; }
 
-  HadOutcome update(const Pixel& p);
+  // For `reblended`: `layer`, the triangle's seam_layer() (-1: not known);
+  // `covered`, the pixel is inside the triangle, not in its fringe.
+  HadOutcome update(const Pixel& p, int layer = -1, bool covered = false);
   const HadCounts& counts() const { return counts_; }
 
  private:

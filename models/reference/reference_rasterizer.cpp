@@ -14,20 +14,29 @@ int floor_clamped(double v, int hi) {
 
 }  // namespace
 
-bool rasterize_reference(const Triangle& t, const FrameSettings& f, const ReferenceSink& sink) {
+bool rasterize_reference(const Triangle& t, const FrameSettings& f, const EdgeRules& rules,
+                         const ReferenceSink& sink) {
   const auto setup = setup_triangle(t);
   if (!setup || !select_start_point(*setup, f.window)) return false;
   const TriangleSetup& s = *setup;
   const PixelBox box = fringe_box(s, f.q, f.window);
+  std::array<SharedEdge, 3> shared;
+  std::array<double, 3> q;  // each edge's fringe: none on an interior edge with edge flags
+  for (int i = 0; i < 3; ++i) {
+    if (rules.top_left) shared[i] = shared_edge(s, i, f.window);
+    q[i] = rules.edge_flags && s.interior[i] ? 0.0 : f.q;
+  }
   ReferenceSample smp;
+  smp.layer = seam_layer(t, s);
   for (int y = box.y0; y <= box.y1; ++y) {
     for (int x = box.x0; x <= box.x1; ++x) {
       bool inside = true;
       double n = 1.0;
       for (int i = 0; i < 3; ++i) {
-        smp.d[i] = s.edge[i].at(x, y);
-        const double ni = norm_q(smp.d[i], f.q);
-        const bool in = (f.q > 0) ? (smp.d[i] > -f.q) : (smp.d[i] >= 0);
+        smp.d[i] = rules.top_left ? shared[i].at(x, y) : s.edge[i].at(x, y);
+        const double ni = norm_q(smp.d[i], q[i]);
+        bool in = (q[i] > 0) ? (smp.d[i] > -q[i]) : (smp.d[i] >= 0);
+        if (q[i] == 0 && rules.top_left && smp.d[i] == 0) in = shared[i].owns_ties();
         inside = inside && in;
         n *= ni;
       }
@@ -40,6 +49,7 @@ bool rasterize_reference(const Triangle& t, const FrameSettings& f, const Refere
       smp.t = s.attr[kT].at(x, y);
       smp.z = s.attr[kZ].at(x, y);
       smp.nf = std::clamp(smp.t, 0.0, 1.0) * n;
+      smp.covered = n == 1.0;
       sink(smp);
     }
   }

@@ -17,14 +17,25 @@ struct ReferenceSample {
   double r = 0, g = 0, b = 0, t = 0, z = 0;  // unclamped plane values
   std::array<double, 3> d{};                  // edge distances
   double nf = 0;                              // T n1 n2 n3, T clamped to 0..1
+  int layer = -1;                             // seam_layer() of the triangle
+  bool covered = false;                       // inside every edge, not in a fringe
 };
 
 using ReferenceSink = std::function<void(const ReferenceSample&)>;
 
+// The preparer's edge options (config `preparer`) that change which pixels
+// the ideal picture holds: a shared edge's pixels drawn once, interior
+// edges without a fringe.
+struct EdgeRules {
+  bool top_left = false;
+  bool edge_flags = false;
+};
+
 // Emits every lattice pixel inside the fringe box with all D_i > -Q (Q > 0)
 // or all D_i >= 0 (Q = 0). Returns false when the triangle is discarded
 // (no area, or it misses the window).
-bool rasterize_reference(const Triangle& t, const FrameSettings& f, const ReferenceSink& sink);
+bool rasterize_reference(const Triangle& t, const FrameSettings& f, const EdgeRules& rules,
+                         const ReferenceSink& sink);
 
 // The HAD's view of a sample, with the hardware's output rules: truncation,
 // saturation to 0..255 / 0..65535, nf as 1.8.

@@ -19,7 +19,7 @@ void require_hardware_q(const Trace& trace) {
 std::vector<std::string> known_backends() { return {"reference", "golden", "approx", "rtl"}; }
 
 std::unique_ptr<Backend> make_backend(const std::string& name, const Params& params) {
-  if (name == "reference") return std::make_unique<ReferenceBackend>();
+  if (name == "reference") return std::make_unique<ReferenceBackend>(EdgeRules{params.fill_top_left, params.edge_flags});
   if (name == "golden") return std::make_unique<GoldenBackend>(params);
   throw std::logic_error("not an untimed back end: " + name);  // CLI11 admits known_backends() only
 }

@@ -27,7 +27,7 @@ template <typename Sequencer>
 void traverse(const Sequencer& seq, const DdaParams& p, Had& had, RunStats& stats) {
   const DdaRunStats one = seq.run(p, [&](const DdaEmit& e) {
     ++stats.pixels_generated;
-    had.update(e.pixel);
+    had.update(e.pixel, p.layer, e.covered);
   });
   if (!stats.dda) stats.dda = DdaRunStats{};
   accumulate(*stats.dda, one);

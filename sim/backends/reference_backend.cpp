@@ -14,9 +14,9 @@ void ReferenceBackend::begin(const Trace& trace) {
 void ReferenceBackend::draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) {
   for (const Triangle& t : frame.triangles) {
     ++stats.triangles_in;
-    const bool drawn = rasterize_reference(t, frame.settings, [&](const ReferenceSample& s) {
+    const bool drawn = rasterize_reference(t, frame.settings, rules_, [&](const ReferenceSample& s) {
       ++stats.pixels_generated;
-      had.update(quantize_reference(s));
+      had.update(quantize_reference(s), s.layer, s.covered);
     });
     stats.triangles_drawn += drawn;
   }

@@ -164,10 +164,11 @@ int run_render(const RenderArgs& a) {
   ctx.level = level_name(input.polygons ? TraceLevel::kPolygon : trace.level);
   ctx.image_sha256 = sha256_hex(out.shown.rgb);
   ctx.warnings = warnings;
-  if (const auto w = limit_warning(a.input, out.stats, params)) {  // a hardware limit hit: counted and warned
-    std::fprintf(stderr, "warning: %s\n", w->c_str());
-    ctx.warnings.push_back(*w);
-  }
+  for (const auto& w : {limit_warning(a.input, out.stats, params), seam_warning(a.input, out.stats)})
+    if (w) {  // a hardware limit hit or a seam: counted and warned
+      std::fprintf(stderr, "warning: %s\n", w->c_str());
+      ctx.warnings.push_back(*w);
+    }
   if (ctx.backend == "rtl") ctx.rtl_build = built_rtl_key();
   ctx.front_end_passes = front_end_passes();
   const nlohmann::json report = make_report(ctx, out.stats, params);

@@ -1,6 +1,7 @@
 #include "io/trace_reader.hpp"
 
 #include <cerrno>
+#include <cstdint>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -202,8 +203,12 @@ class TraceBuilder {
 
   void triangle(const LineParser& p) {
     require_level(p, TraceLevel::kTriangle);
-    p.expect_count(21, "numbers (X Y Z R G B T for each of 3 vertices)");
-    current().triangles.push_back(read_triangle(p, 1, kScreenVertex));
+    if (p.size() < 22 || p.size() > 24)
+      p.expect_count(21, "numbers (X Y Z R G B T for each of 3 vertices), then optionally INTERIOR and SURFACE");
+    Triangle t = read_triangle(p, 1, kScreenVertex);
+    if (p.size() > 22) t.interior_edges = static_cast<uint8_t>(p.integer_in(22, "INTERIOR", 0, 7));
+    if (p.size() > 23) t.surface = static_cast<int>(p.integer_in(23, "SURFACE", 0, INT32_MAX));
+    current().triangles.push_back(t);
   }
 
   void format(const LineParser& p) {
@@ -219,7 +224,8 @@ class TraceBuilder {
   void dda(const LineParser& p) {
     require_level(p, TraceLevel::kDda);
     if (!format_seen_) p.fail("'dda' before the 'format' record");
-    p.expect_count(5 + 3 * kEpCount, "integers (X0 Y0 XMIN XMAX YMAX, then value dx dy of 8 EPs)");
+    if (p.size() != 6 + 3 * kEpCount + 1)
+      p.expect_count(5 + 3 * kEpCount, "integers (X0 Y0 XMIN XMAX YMAX, then value dx dy of 8 EPs), then optionally HARD");
     const FrameSettings& s = current().settings;
     if (!is_hardware_q(s.q)) p.fail("the DDA takes Q = 0 or a power of two 1/16..8 (set by 'q')");
     DdaParams d;
@@ -240,6 +246,7 @@ class TraceBuilder {
       d.ep[e].dx = p.integer_in(b + 1, kEpNames[e], f.raw_min(), f.raw_max());
       d.ep[e].dy = p.integer_in(b + 2, kEpNames[e], f.raw_min(), f.raw_max());
     }
+    if (p.size() > 6 + 3 * kEpCount) d.hard_edges = static_cast<uint8_t>(p.integer_in(6 + 3 * kEpCount, "HARD", 0, 7));
     current().dda.push_back(d);
   }
 

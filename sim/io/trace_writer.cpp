@@ -53,12 +53,15 @@ void TraceWriter::begin_frame(const FrameSettings& s) {
 void TraceWriter::write(const Triangle& t) {
   out_ << "tri";
   for (const Vertex& v : t.v) out_ << "  " << v.x << " " << v.y << " " << v.z << " " << v.r << " " << v.g << " " << v.b << " " << v.t;
+  if (t.surface >= 0) out_ << "  " << int(t.interior_edges) << " " << t.surface;
+  else if (t.interior_edges) out_ << "  " << int(t.interior_edges);
   out_ << "\n";
 }
 
 void TraceWriter::write(const DdaParams& p) {
   out_ << "dda " << p.x0 << " " << p.y0 << " " << p.xmin << " " << p.xmax << " " << p.ymax;
   for (const EpInit& e : p.ep) out_ << "  " << e.v << " " << e.dx << " " << e.dy;
+  if (p.hard_edges) out_ << "  " << int(p.hard_edges);
   out_ << "\n";
 }
 

@@ -26,7 +26,7 @@ class ApproxEngine : public BackendEngine {
   void draw(const DdaParams& d) override {
     timing_.begin_triangle();
     const DdaRunStats st = dda_.run(d, [&](const DdaEmit& e) {
-      timing_.pixel({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel)});
+      timing_.pixel({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel, d.layer, e.covered)});
     });
     timing_.end_triangle(st.cycles);
     accumulate(r_.dda, st);

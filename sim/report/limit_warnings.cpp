@@ -8,7 +8,9 @@ namespace {
 
 // The config key of an EP's format and its integer bits now.
 std::string widen_key(int ep, const Params& p) {
-  if (ep >= kEpD1) return "ep.d.int_bits above " + std::to_string(p.ep_d.int_bits);
+  if (ep >= kEpD1)
+    return "preparer.far_edges \"constant\" (config/presets/robust.json) or ep.d.int_bits above " +
+           std::to_string(p.ep_d.int_bits);
   if (ep == kEpZ) return "ep.z.int_bits above " + std::to_string(p.ep_z.int_bits);
   if (ep == kEpT) return "ep.t.int_bits above " + std::to_string(p.ep_t.int_bits);
   return "ep.color.int_bits above " + std::to_string(p.ep_color.int_bits);
@@ -46,6 +48,14 @@ std::optional<std::string> limit_warning(const std::string& input, const RunStat
   return input + ": " + what + " in " + std::to_string(n.triangles_affected) + " triangle(s); first: " + first +
          ": the picture is wrong there. A --config file setting " + settings +
          " avoids it (on rtl, an RTL variant is built for it)";
+}
+
+std::optional<std::string> seam_warning(const std::string& input, const RunStats& s) {
+  if (s.had.reblended == 0) return std::nullopt;
+  return input + ": " + std::to_string(s.had.reblended) +
+         " pixel blends by a surface that had already blended the pixel (seams at shared edges: drawn twice, "
+         "or a neighbour's antialiasing fringe). A --config file setting preparer.fill_rule \"top_left\" and "
+         "preparer.edge_flags true (config/presets/robust.json) avoids it";
 }
 
 }  // namespace girtd

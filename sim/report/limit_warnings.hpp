@@ -13,5 +13,7 @@ namespace girtd {
 
 // "INPUT: wrapped EP values in use ...", or nothing when no triangle was affected.
 std::optional<std::string> limit_warning(const std::string& input, const RunStats& s, const Params& p);
+// "INPUT: N pixels blended twice by one surface ...", or nothing without seams.
+std::optional<std::string> seam_warning(const std::string& input, const RunStats& s);
 
 }  // namespace girtd

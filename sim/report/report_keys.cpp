@@ -80,6 +80,15 @@ std::vector<ReportKey> make_keys() {
           [](auto& r) { return json(r.s.had.blended); }, true),
       key("pixels_z_rejected", "count", "failed Z < Zb", kEvery, [](auto& r) { return json(r.s.had.z_rejected); },
           true),
+      key("pixels_reblended", "count",
+          "seams: blends of a pixel that its surface's faces turned the same way had already blended in this "
+          "frame, one of the two inside its triangle (a shared edge drawn by both triangles, or a neighbour's "
+          "antialiasing fringe over a triangle; two fringes over each other outside a silhouette's corner are "
+          "per-edge antialiasing and not counted); the run warns. 0 with "
+          "`preparer.fill_rule` top_left and `preparer.edge_flags` (config/presets/robust.json). Needs the "
+          "triangles' surfaces (polygon-level input, or triangle traces that carry them). Not on rtl: its HAD "
+          "sees no surface ids",
+          kReference | kGolden | kApprox, [](auto& r) { return json(r.s.had.reblended); }),
       key("pixels_dropped", "count",
           "nf = 0 or off-screen. generated = written + blended + z_rejected + dropped", kEvery,
           [](auto& r) { return json(r.s.had.dropped); }, true),
@@ -114,9 +123,10 @@ std::vector<ReportKey> make_keys() {
           "`saturations` (outputs clipped at emission, by design), "
           "`clamps` (start values and derivatives the preparer clamped); `triangles_affected` (drawn with a wrap "
           "or a clamp; the run warns for either) and `first_triangle_affected` (numbered from 1 among those drawn, "
-          "over all frames; null: none). null on thesis-level traces (the appendix program's own formats). The "
-          "RTL does not flag wraps yet (issue: stiff and extreme inputs)",
-          kGolden | kApprox, [](auto& r) { return numerics_json(r); }),
+          "over all frames; null: none). A wrap is what the detector sees: each EP carried with "
+          "`ep.wrap_guard_bits` guard bits (golden and the RTL alike, hw/dda/dda_limits.sv). null on thesis-level "
+          "traces (the appendix program's own formats)",
+          kHardware, [](auto& r) { return numerics_json(r); }),
       key("clock_ns", "ns", "DDA clock period", kEvery, [](auto& r) { return json(r.params.dda_clock_ns); }, true),
       key("modeled_time_s", "s",
           "whole-pipeline modeled time, from the first frame's clear to the last swap", kTimed,
@@ -247,14 +257,12 @@ std::vector<ReportKey> make_keys() {
   return k;
 }
 
-const char* known_by_text(unsigned k) {
-  switch (k) {
-    case kEvery: return "all";
-    case kHardware: return "golden, approx, rtl";
-    case kTimed: return "approx, rtl";
-    case kGolden | kApprox: return "golden, approx";
-    default: return "?";
-  }
+std::string known_by_text(unsigned k) {
+  if (k == kEvery) return "all";
+  std::string out;
+  for (const auto& [bit, name] : {std::pair{kReference, "reference"}, {kGolden, "golden"}, {kApprox, "approx"}, {kRtl, "rtl"}})
+    if (k & bit) out += (out.empty() ? "" : ", ") + std::string(name);
+  return out;
 }
 
 }  // namespace

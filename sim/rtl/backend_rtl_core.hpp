@@ -84,6 +84,7 @@ class BackendRtlCore final : public BackendRtl {
   void draw(const DdaParams& d) override {
     Model& t = *top_;
     ++triangles_;
+    source_lines_.push_back(d.source_line);
     load_dda_ports(t, d, params_);
     t.in_valid_i = 1;
     for (uint64_t guard = 0;; ++guard) {
@@ -156,6 +157,8 @@ class BackendRtlCore final : public BackendRtl {
     r.dda.cycles = t.dda_clocks_o;
     r.dda.emitted = t.pixels_generated_o;
     r.dda.per_state = state_clocks_;
+    r.dda.triangles = triangles_;
+    r.dda.numerics = read_numerics(t, source_lines_);
     r.dda_wait_ticks = t.dda_wait_ticks_o;
     r.page_misses = t.page_misses_o;
     r.had_busy_ticks = t.had_busy_ticks_o;
@@ -243,6 +246,7 @@ class BackendRtlCore final : public BackendRtl {
   uint64_t period_ = 1, steal_period_ = 0;  // DDA clock and VRAM steal period, in ticks
   std::array<uint64_t, static_cast<size_t>(DdaState::kCount)> state_clocks_{};
   uint64_t triangles_ = 0;
+  std::vector<int> source_lines_;  // of each parameter set drawn (the first affected one's line)
   std::function<void(const BackendRtl::TickProbe&)> on_tick_;
 };
 

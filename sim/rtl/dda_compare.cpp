@@ -43,6 +43,19 @@ DdaComparison compare_dda(const DdaEngine& golden, DdaRtl& rtl, const DdaParams&
     o << "clocks: golden " << c.golden.cycles << ", rtl " << c.rtl.stats.cycles;
     c.match = false;
   }
+  // The wrap detector's counts (report.json `numerics`): the same per EP.
+  const EpNumerics& gn = c.golden.numerics;
+  const EpNumerics& rn = c.rtl.stats.numerics;
+  for (int i = 0; c.match && i < kEpCount; ++i)
+    if (gn.ep[i].wraps != rn.ep[i].wraps || gn.ep[i].saturations != rn.ep[i].saturations) {
+      o << kEpNames[i] << " wraps/saturations: golden " << gn.ep[i].wraps << "/" << gn.ep[i].saturations << ", rtl "
+        << rn.ep[i].wraps << "/" << rn.ep[i].saturations;
+      c.match = false;
+    }
+  if (c.match && gn.triangles_affected != rn.triangles_affected) {
+    o << "triangle affected: golden " << gn.triangles_affected << ", rtl " << rn.triangles_affected;
+    c.match = false;
+  }
   c.first_difference = o.str();
   return c;
 }

@@ -55,6 +55,9 @@ DdaRtlResult DdaRtl::run(const DdaParams& in, const DdaEngine::PixelSink& sink, 
   std::mt19937 rng(opt.seed);
   std::bernoulli_distribution refuse(opt.stall_probability);
 
+  // The numerics counters run on across parameter sets: this run's are the difference.
+  const EpNumerics before = read_numerics(top, {});
+
   // Wait for the DDA to accept, then load.
   m.load_ports(in);
   top.in_valid_i = 1;
@@ -97,6 +100,15 @@ DdaRtlResult DdaRtl::run(const DdaParams& in, const DdaEngine::PixelSink& sink, 
     m.tick();
     if (clocks + res.stall_cycles > bound) throw std::logic_error("RTL DDA did not finish");
   }
+  const EpNumerics after = read_numerics(top, {});
+  EpNumerics& n = res.stats.numerics;
+  for (int i = 0; i < kEpCount; ++i) {
+    n.ep[i].wraps = after.ep[i].wraps - before.ep[i].wraps;
+    n.ep[i].saturations = after.ep[i].saturations - before.ep[i].saturations;
+  }
+  n.triangles_affected = after.triangles_affected - before.triangles_affected;
+  if (n.triangles_affected) n.first_affected_line = in.source_line;
+  res.stats.triangles = 1;
   return res;
 }
 

@@ -5,11 +5,13 @@
 #include <cstdint>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "common/input_error.hpp"
 #include "common/triangle_setup.hpp"
 #include "config/params.hpp"
 #include "dda/dda_params.hpp"
+#include "dda/ep_numerics.hpp"
 #include "config/rtl_layout.hpp"
 #include "config/rtl_package.hpp"
 #include "rtl_build.hpp"
@@ -32,6 +34,21 @@ void set_port(Port& port, int64_t value, int bits) {
   port = static_cast<std::remove_reference_t<Port>>(static_cast<uint64_t>(value) & mask);
 }
 
+// The DDA's numerics counters (hw/dda/dda_limits.sv): COUNT_W = 32 bits
+// each, one word of Verilator's wide ports apiece. `lines`: the source line
+// of each parameter set taken, in order (for the first affected one).
+template <typename Top>
+EpNumerics read_numerics(const Top& top, const std::vector<int>& lines) {
+  static_assert(kRtlCountBits == 32, "one counter per 32-bit word of the wide port");
+  EpNumerics n;
+  for (int i = 0; i < kEpCount; ++i) n.ep[i].wraps = top.wraps_o[i];
+  for (int i = 0; i < 5; ++i) n.ep[i].saturations = top.clips_o[i];
+  n.triangles_affected = top.triangles_affected_o;
+  n.first_affected = top.first_affected_o;
+  if (n.first_affected > 0 && n.first_affected <= lines.size()) n.first_affected_line = lines[n.first_affected - 1];
+  return n;
+}
+
 template <typename Top>
 void load_dda_ports(Top& top, const DdaParams& d, const Params& params) {
   const int xy = params.xy_bits;
@@ -42,6 +59,8 @@ void load_dda_ports(Top& top, const DdaParams& d, const Params& params) {
   set_port(top.ymax_i, d.ymax, xy);
   top.q_zero_i = d.q == 0;
   set_port(top.q_k_i, d.q == 0 ? 0 : q_log2(d.q), kRtlQExponentBits);
+  set_port(top.hard_edges_i, d.hard_edges, 3);
+  top.clamped_i = d.clamped;
   auto ep = [](auto& v, auto& dx, auto& dy, const EpInit& e, int w) {
     set_port(v, e.v, w);
     set_port(dx, e.dx, w);

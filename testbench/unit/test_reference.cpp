@@ -68,7 +68,7 @@ struct Run {
 
 Run run(const Triangle& t, const FrameSettings& f) {
   Run r;
-  r.drawn = rasterize_reference(t, f, [&](const ReferenceSample& s) { r.samples.push_back(s); });
+  r.drawn = rasterize_reference(t, f, EdgeRules{}, [&](const ReferenceSample& s) { r.samples.push_back(s); });
   return r;
 }
 

@@ -180,10 +180,14 @@ TEST_CASE("trace reader rejects a wrong field count with its line", "[trace]") {
   CHECK(f.line == 3);
   CHECK(f.file == "test.trace");
   CHECK_THAT(f.what, Catch::Contains("21"));
-  // 22 numbers is wrong too.
-  const Failure g = read_failure("girtd-trace 1 triangle\n" + std::string(kTri1) + " 5\n");
+  // 24 numbers is wrong too (21, then INTERIOR and SURFACE at most).
+  const Failure g = read_failure("girtd-trace 1 triangle\n" + std::string(kTri1) + " 5 1 2\n");
   CHECK(g.line == 2);
   CHECK_THAT(g.what, Catch::Contains("21"));
+  // INTERIOR is a 3-bit mask.
+  const Failure i = read_failure("girtd-trace 1 triangle\n" + std::string(kTri1) + " 8\n");
+  CHECK(i.line == 2);
+  CHECK_THAT(i.what, Catch::Contains("INTERIOR = 8 is outside 0..7"));
   // window with 3 fields.
   const Failure h = read_failure("girtd-trace 1 triangle\nwindow 0 0 100\n" + std::string(kTri1) + "\n");
   CHECK(h.line == 2);
@@ -498,6 +502,19 @@ TEST_CASE("dda trace values must fit their registers and follow the format recor
   // The DDA takes only Q = 0 or a power of two: q 0.3 is refused at the dda record.
   const Failure c = read_failure("girtd-trace 1 dda\n" + fmt + "q 0.3\n" + dda_with_d1("0"));
   CHECK(c.line == 4);
+}
+
+TEST_CASE("a triangle's interior edges and surface are optional fields", "[trace]") {
+  const Trace t = read_text("girtd-trace 1 triangle\n" + std::string(kTri1) + "\n" + kTri1 + " 5\n" + kTri1 +
+                            " 2 17\n");
+  const auto& tris = t.frames.at(0).triangles;
+  REQUIRE(tris.size() == 3);
+  CHECK(tris[0].interior_edges == 0);
+  CHECK(tris[0].surface == -1);
+  CHECK(tris[1].interior_edges == 5);
+  CHECK(tris[1].surface == -1);
+  CHECK(tris[2].interior_edges == 2);
+  CHECK(tris[2].surface == 17);
 }
 
 }  // namespace girtd
