@@ -65,6 +65,7 @@ void GoldenBackend::draw_frame(const TraceFrame& frame, Had& had, RunStats& stat
 }
 
 void GoldenBackend::finish(RunStats& stats) const {
+  if (!stats.dda) stats.dda = DdaRunStats{};  // no triangle reached the DDA: it ran 0 clocks, as rtl's counters say
   stats.preparer = preparer_.counts();
   stats.stages.push_back(untimed_stage("preparer", preparer_.counts().prepared));
   stats.stages.push_back(untimed_stage("dda", stats.triangles_drawn));

@@ -44,4 +44,14 @@ struct RegressArgs {
 
 int run_regress(const RegressArgs& a);
 
+struct StressArgs {
+  std::vector<std::string> families;  // empty: every family
+  ConfigFiles config;
+  std::string out_dir = "out/stress";
+  bool fast = false;         // the CTest subset of each family
+  double timeout_s = 300;    // a render that takes longer is a hang
+};
+
+int run_stress(const StressArgs& a);
+
 }  // namespace girtd

@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
 #include "rtl/rtl_variants.hpp"
+#include "stress/stress_cases.hpp"
 
 namespace {
 constexpr const char* kConfigHelp =
@@ -79,6 +80,17 @@ int main(int argc, char** argv) {
   regress->add_flag("--dda-only", rg.dda_only, "compare the DDA alone, not the whole RTL back end");
   regress->add_option("--config", rg.config, kConfigHelp)->allow_extra_args(false);
 
+  StressArgs st;
+  CLI::App* stress = app.add_subcommand("stress", "generated extreme cases on reference, golden and rtl");
+  stress->add_option("--family", st.families, "a family (repeatable; default: all)")
+      ->check(CLI::IsMember(stress_families()));
+  stress->add_option("--config", st.config, kConfigHelp)->allow_extra_args(false);
+  stress->add_option("--out", st.out_dir, "output directory")->capture_default_str();
+  stress->add_flag("--fast", st.fast, "a few cases of each family (the CTest subset)");
+  stress->add_option("--timeout", st.timeout_s, "seconds a render may take before it counts as a hang")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -100,6 +112,7 @@ int main(int argc, char** argv) {
     if (*claims) return run_claims(claims_config);
     if (*bench) return run_bench(bench_config, bench_out, bench_pipeline, bench_bless, bench_inputs);
     if (*regress) return run_regress(rg);
+    if (*stress) return run_stress(st);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.formatted().c_str());
     return 2;

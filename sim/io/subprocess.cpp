@@ -4,7 +4,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <thread>
 #include <stdexcept>
 
 namespace girtd {
@@ -12,6 +15,10 @@ namespace girtd {
 int run_process(const std::vector<std::string>& args, bool quiet) { return run_process_logged(args, quiet ? "/dev/null" : ""); }
 
 int run_process_logged(const std::vector<std::string>& args, const std::string& log_path) {
+  return run_process_timed(args, log_path, 0);
+}
+
+int run_process_timed(const std::vector<std::string>& args, const std::string& log_path, double timeout_s) {
   std::vector<std::string> copy = args;
   std::vector<char*> argv;
   for (std::string& a : copy) argv.push_back(a.data());
@@ -32,7 +39,19 @@ int run_process_logged(const std::vector<std::string>& args, const std::string& 
     _exit(127);
   }
   int status = 0;
-  if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status)) return -1;
+  const auto start = std::chrono::steady_clock::now();
+  for (;;) {
+    const pid_t done = waitpid(pid, &status, timeout_s > 0 ? WNOHANG : 0);
+    if (done < 0) return -1;
+    if (done == pid) break;
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout_s) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      return kTimedOut;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  if (!WIFEXITED(status)) return -1;
   return WEXITSTATUS(status);
 }
 

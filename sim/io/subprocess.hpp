@@ -12,6 +12,9 @@ namespace girtd {
 int run_process(const std::vector<std::string>& argv, bool quiet);
 // The same with its stdout and stderr appended to `log_path` ("" keeps ours).
 int run_process_logged(const std::vector<std::string>& argv, const std::string& log_path);
+// The same, killed after `timeout_s` seconds (0: never): returns kTimedOut then.
+inline constexpr int kTimedOut = -2;
+int run_process_timed(const std::vector<std::string>& argv, const std::string& log_path, double timeout_s);
 
 // This program's own path (/proc/self/exe), to run a subcommand in a child
 // process: SystemC elaborates once per process.
