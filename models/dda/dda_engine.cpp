@@ -74,7 +74,11 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
       const int t = t_operand(saturate_output(r.v[kEpT], params_.ep_t));
       const int n1 = norm[0].norm(r.v[kEpD1]), n2 = norm[1].norm(r.v[kEpD2]), n3 = norm[2].norm(r.v[kEpD3]);
       e.pixel = output_pixel(r, params_, compute_nf(n1, n2, n3, t, params_.prom_frac_bits));
+      // Covered: inside every hard edge, strictly inside every soft one (a
+      // pixel on a silhouette is on the boundary, not a triangle's own).
       e.covered = n1 == kNfOne && n2 == kNfOne && n3 == kNfOne;
+      for (int i = 0; i < 3; ++i)
+        if (in.q > 0 && !((in.hard_edges >> i) & 1) && r.v[kEpD1 + i] == 0) e.covered = false;
       sink(e);
     };
 

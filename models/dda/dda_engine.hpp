@@ -23,7 +23,7 @@ struct DdaEmit {
   Pixel pixel;
   uint64_t cycle = 0;                     // clock the pixel leaves the DDA (state clock + latency)
   std::array<int64_t, kEpCount> raw{};    // EP registers at emission, before output stages
-  bool covered = false;                   // inside every edge (n1 = n2 = n3 = 1), not in a fringe
+  bool covered = false;                   // inside the triangle: not in a fringe, not on a soft edge
 };
 
 // One clock as seen from outside: the state, the pixel position, whether it emitted.

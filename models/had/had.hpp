@@ -17,10 +17,11 @@ struct HadCounts {
   uint64_t written = 0, blended = 0, z_rejected = 0, dropped = 0;
   // Not an outcome: seams. Blends of a pixel its layer (a surface's faces
   // turned the same way) had already blended this frame, where one of the two
-  // covered the pixel (inside its triangle, not in a fringe): a shared edge
-  // drawn twice, or a neighbour's fringe over a triangle. Two fringes over
-  // each other outside a silhouette's corner are per-edge antialiasing, not
-  // a seam, and not counted.
+  // covered the pixel (inside its triangle: not in a fringe, not on a soft
+  // edge): a shared edge drawn twice, or a neighbour's fringe over a
+  // triangle. Two fringes over each other at a silhouette's corner, or two
+  // triangles meeting on a silhouette, are per-edge antialiasing, not a seam,
+  // and not counted.
   uint64_t reblended = 0;
   uint64_t total() const { return written + blended + z_rejected + dropped; }
 };

@@ -49,7 +49,9 @@ bool rasterize_reference(const Triangle& t, const FrameSettings& f, const EdgeRu
       smp.t = s.attr[kT].at(x, y);
       smp.z = s.attr[kZ].at(x, y);
       smp.nf = std::clamp(smp.t, 0.0, 1.0) * n;
-      smp.covered = n == 1.0;
+      smp.covered = n == 1.0;  // and not on a soft edge (the boundary, as models/dda counts it)
+      for (int i = 0; i < 3; ++i)
+        if (q[i] > 0 && smp.d[i] == 0) smp.covered = false;
       sink(smp);
     }
   }

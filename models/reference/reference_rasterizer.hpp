@@ -18,7 +18,7 @@ struct ReferenceSample {
   std::array<double, 3> d{};                  // edge distances
   double nf = 0;                              // T n1 n2 n3, T clamped to 0..1
   int layer = -1;                             // seam_layer() of the triangle
-  bool covered = false;                       // inside every edge, not in a fringe
+  bool covered = false;                       // inside the triangle: not in a fringe, not on a soft edge
 };
 
 using ReferenceSink = std::function<void(const ReferenceSample&)>;
