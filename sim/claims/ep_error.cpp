@@ -18,7 +18,7 @@ EpErrorSample measure_ep_error(const Params& p, int triangles, double span, int 
   FrameSettings f;
   f.q = 1;
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> coord(0, span), colour(0, 255), depth(0, 65534);
+  std::uniform_real_distribution<double> coord(0, span), colour(0, 255), depth(0, 65534), opacity(0, 1);
   EpErrorSample s;
   for (int n = 0; n < triangles; ++n) {
     Triangle t;
@@ -29,6 +29,7 @@ EpErrorSample measure_ep_error(const Params& p, int triangles, double span, int 
       v.r = colour(rng);
       v.g = colour(rng);
       v.b = colour(rng);
+      v.t = opacity(rng);
     }
     DdaParams dp;
     if (prep.prepare(t, f, dp) != PrepareResult::kReady) continue;
@@ -41,6 +42,7 @@ EpErrorSample measure_ep_error(const Params& p, int triangles, double span, int 
         s.max_color_lsb = std::max(s.max_color_lsb,
                                    std::fabs(to_double(e.raw[kEpR + a], p.ep_color) - setup.attr[a].at(x, y)));
       s.max_z_lsb = std::max(s.max_z_lsb, std::fabs(to_double(e.raw[kEpZ], p.ep_z) - setup.attr[kZ].at(x, y)));
+      s.max_t_lsb = std::max(s.max_t_lsb, std::fabs(to_double(e.raw[kEpT], p.ep_t) - 256 * setup.attr[kT].at(x, y)));
       for (int i = 0; i < 3; ++i)
         s.max_d_px = std::max(s.max_d_px, std::fabs(to_double(e.raw[kEpD1 + i], p.ep_d) - setup.edge[i].at(x, y)));
       s.max_steps = std::max(s.max_steps, steps);

@@ -11,6 +11,7 @@ struct EpErrorSample {
   double max_color_lsb = 0;   // |R, G, B EP value - exact| in colour LSBs
   double max_d_px = 0;        // |D EP value - exact distance| in pixels
   double max_z_lsb = 0;
+  double max_t_lsb = 0;       // T on its 0..256 scale
   int max_steps = 0;          // largest |X - X0| + |Y - Y0| among the pixels
   uint64_t pixels = 0;
 };

@@ -1,6 +1,7 @@
 // girtd claims: GIRTD.md §9, each thesis claim next to what this simulator
 // measures. A row with no measurement yet says so. The front end's rows run
 // the timed pipeline in a child process (SystemC elaborates once per process).
+#include <unistd.h>
 #include <stdlib.h>
 
 #include <algorithm>
@@ -16,6 +17,8 @@
 
 #include "claims/dda_efficiency.hpp"
 #include "claims/ep_error.hpp"
+#include "claims/numeric_limits.hpp"
+#include "io/subprocess.hpp"
 #include "claims/thesis_losses.hpp"
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
@@ -81,6 +84,63 @@ void error_rows(const Params& p, std::vector<ClaimRow>& rows) {
                   e.max_color_lsb <= colour_bound ? "confirmed" : "refuted"});
   rows.push_back({"error after <= 1024 steps, edge distance", "<= 0.125 px",
                   fmt("max %.4f px", e.max_d_px), e.max_d_px <= d_bound ? "confirmed" : "refuted"});
+}
+
+// How often the demo and the sample models hit a limit or show seams: a
+// golden render of each in a child process, as a user would run it.
+void limits_in_samples(const ConfigFiles& config, std::vector<ClaimRow>& rows) {
+  const std::string dir = (std::filesystem::temp_directory_path() / ("girtd_claims_" + std::to_string(getpid()))).string();
+  std::string measured;
+  int hit = 0, inputs = 0;
+  for (const char* in : {"traces/scenes/demo.json", "traces/models/torus.obj", "traces/models/sphere.ply",
+                         "traces/models/cube.off", "traces/models/star.obj", "traces/scenes/near_clip.json"}) {
+    if (!std::filesystem::exists(in)) continue;
+    std::vector<std::string> args = {self_executable(), "render", in, "--backend", "golden", "--out", dir, "--quiet"};
+    for (const std::string& a : config_args(config)) args.push_back(a);
+    if (run_process(args, true) != 0) continue;
+    std::ifstream f(dir + "/report.json");
+    const nlohmann::json r = nlohmann::json::parse(f);
+    const uint64_t affected = r.at("numerics").value("triangles_affected", uint64_t{0});
+    ++inputs;
+    hit += affected > 0;
+    measured += std::string(measured.empty() ? "" : "; ") + std::filesystem::path(in).filename().string() + ": " +
+                fmt("%.0f of %.0f triangles, ", double(affected), r.at("triangles_drawn").get<double>()) +
+                fmt("%.0f seam pixels", r.at("pixels_reblended").get<double>());
+  }
+  std::filesystem::remove_all(dir);
+  rows.push_back({"limits hit by the demo and sample models (golden)", "(not discussed)",
+                  fmt("%.0f of %.0f inputs hit a limit: ", hit, inputs) + measured, "measured"});
+}
+
+// Issue 17: where the formats stop drawing right, and how often real inputs get there.
+void numerics_rows(const Params& p, const ConfigFiles& config, std::vector<ClaimRow>& rows) {
+  std::string growth;
+  for (int steps : {256, 1024, 2048}) {
+    const EpErrorSample e = measure_ep_error(p, 100, 1023, steps, 4242);
+    growth += std::string(growth.empty() ? "" : "; ") + fmt("<= %.0f steps: ", steps) +
+              fmt("colour %.3f, T %.3f, ", e.max_color_lsb, e.max_t_lsb) +
+              fmt("Z %.3f LSB, D %.4f px", e.max_z_lsb, e.max_d_px);
+  }
+  rows.push_back({"EP error growth with the steps walked (100 random triangles up to 1023 px)",
+                  "grows by half an LSB of the derivative per step", growth, "measured"});
+  std::string collapse;
+  for (double area : {1e3, 1e2, 10.0, 1.0, 1e-6, 1e-12}) {
+    const CollapseSample c = measure_collapse(p, area);
+    collapse += std::string(collapse.empty() ? "" : "; ") + fmt("area %g: ", area) +
+                fmt("%.0f dropped, ", double(c.dropped)) + fmt("%.0f clamped, ", double(c.clamped_values)) +
+                fmt("%.0f px, ", double(c.pixels)) + fmt("worst %.0f LSB", double(c.max_colour_error));
+  }
+  rows.push_back({"the preparer as a triangle's area goes to 0 (20 slivers, red 0..255 across the height)",
+                  "(not discussed)", collapse, "measured"});
+  Params far = p;
+  far.far_edges_constant = true;
+  const double safe = largest_safe_overhang(p), safe_far = largest_safe_overhang(far);
+  rows.push_back({"D EPs' safe range: largest overhang of a screen-filling triangle drawn right",
+                  fmt("%.0f integer bits hold the screen", p.ep_d.int_bits),
+                  fmt("%.0f px beyond the screen; ", safe) +
+                      fmt("with preparer.far_edges constant: %.0f px (the corners at the input limit, 1e6)", safe_far),
+                  safe >= 0 ? "confirmed" : "refuted"});
+  limits_in_samples(config, rows);
 }
 
 void thesis_rows(const Params& p, std::vector<ClaimRow>& rows) {
@@ -232,6 +292,7 @@ int run_claims(const ConfigFiles& config) {
   std::vector<ClaimRow> rows;
   dda_rows(p, rows);
   error_rows(p, rows);
+  numerics_rows(p, config, rows);
   thesis_rows(p, rows);
   memory_rows(p, rows);
   preparer_rows(p, rows);
