@@ -4,6 +4,10 @@
 
 #include <cmath>
 
+#include <map>
+#include <vector>
+
+#include "dda/dda_engine.hpp"
 #include "dda/dda_preparer.hpp"
 
 namespace girtd {
@@ -111,6 +115,99 @@ TEST_CASE("preparer: discards triangles with no area or outside the window", "[p
         PrepareResult::kOffWindow);
   CHECK(prep.counts().degenerate == 1);
   CHECK(prep.counts().off_window == 1);
+}
+
+}  // namespace girtd
+
+namespace girtd {
+namespace {
+
+// Emissions per lattice pixel of `tris` through the preparer and the DDA.
+std::map<std::pair<int, int>, int> coverage(const Params& p, const std::vector<Triangle>& tris, double q,
+                                            uint8_t interior = 0) {
+  DdaPreparer prep(p);
+  const DdaEngine dda(p);
+  std::map<std::pair<int, int>, int> hits;
+  for (Triangle t : tris) {
+    t.interior_edges = interior;
+    DdaParams d;
+    if (prep.prepare(t, frame(q), d) != PrepareResult::kReady) continue;
+    dda.run(d, [&](const DdaEmit& e) { ++hits[{e.pixel.x, e.pixel.y}]; });
+  }
+  return hits;
+}
+
+}  // namespace
+
+// A 10 x 10 square on lattice corners, split on its diagonal: 121 lattice
+// points in the closed square. As written (D >= 0) both triangles draw the
+// 11 on the diagonal; with the top-left rule the square owns its left and
+// top edges only, 10 x 10 points, each drawn once.
+TEST_CASE("preparer: the top-left rule draws a shared diagonal once", "[preparer]") {
+  const std::vector<Triangle> square = {tri({{{100, 100, 0}, {110, 100, 0}, {110, 110, 0}}}),
+                                        tri({{{100, 100, 0}, {110, 110, 0}, {100, 110, 0}}})};
+  const auto as_written = coverage(Params::defaults(), square, 0);
+  CHECK(as_written.size() == 121);
+  int twice = 0;
+  for (const auto& [px, n] : as_written) twice += n == 2;
+  CHECK(twice == 11);
+
+  const Params top_left = Params::with_overrides({{"preparer", {{"fill_rule", "top_left"}}}}, "test");
+  const auto once = coverage(top_left, square, 0);
+  CHECK(once.size() == 100);
+  for (const auto& [px, n] : once) {
+    CHECK(n == 1);
+    CHECK(px.first >= 100);
+    CHECK(px.first <= 109);
+    CHECK(px.second >= 100);
+    CHECK(px.second <= 109);
+  }
+}
+
+// With Q = 1 each triangle's fringe runs a pixel over the diagonal into its
+// neighbour; an interior edge with edge flags has none: the diagonal's
+// neighbourhood is drawn once (the outer edges keep their fringe).
+TEST_CASE("preparer: edge flags take the fringe off an interior edge", "[preparer]") {
+  const std::vector<Triangle> square = {tri({{{100, 100, 0}, {110, 100, 0}, {110, 110, 0}}}),
+                                        tri({{{100, 100, 0}, {110, 110, 0}, {100, 110, 0}}})};
+  const Params robust =
+      Params::with_overrides({{"preparer", {{"fill_rule", "top_left"}, {"edge_flags", true}}}}, "test");
+  // Edge 2 of the first triangle (v2 -> v0) and edge 0 of the second (v0 -> v1) are the diagonal.
+  int overlapping = 0;
+  for (const auto& [px, n] : coverage(Params::defaults(), square, 1)) overlapping += n > 1;
+  CHECK(overlapping > 11);
+  DdaPreparer prep(robust);
+  const DdaEngine dda(robust);
+  std::map<std::pair<int, int>, int> hits;
+  const uint8_t diagonal[2] = {4, 1};
+  for (int k = 0; k < 2; ++k) {
+    Triangle t = square[k];
+    t.interior_edges = diagonal[k];
+    DdaParams d;
+    REQUIRE(prep.prepare(t, frame(1), d) == PrepareResult::kReady);
+    CHECK(d.hard_edges != 0);
+    dda.run(d, [&](const DdaEmit& e) { ++hits[{e.pixel.x, e.pixel.y}]; });
+  }
+  int drawn_twice = 0;
+  for (const auto& [px, n] : hits) drawn_twice += n > 1;
+  CHECK(drawn_twice == 0);
+}
+
+// Corners a million pixels away: as written the D EPs (+-2048 px) cannot
+// hold the start values (clamped, counted); with far edges as constants
+// every edge that misses the window becomes D = 0 (inside everywhere).
+TEST_CASE("preparer: far edges as constants", "[preparer]") {
+  const Triangle huge = tri({{{-1e6, -1e6, 0}, {1e6, -1e6, 0}, {511.5, 1e6, 0}}});
+  DdaParams d;
+  DdaPreparer as_written(Params::defaults());
+  REQUIRE(as_written.prepare(huge, frame(0), d) == PrepareResult::kReady);
+  CHECK(d.clamped);
+  const Params far = Params::with_overrides({{"preparer", {{"far_edges", "constant"}}}}, "test");
+  DdaPreparer prep(far);
+  REQUIRE(prep.prepare(huge, frame(0), d) == PrepareResult::kReady);
+  CHECK_FALSE(d.clamped);
+  for (int e = kEpD1; e <= kEpD3; ++e) CHECK(d.ep[e] == EpInit{});
+  CHECK(prep.counts().constant_edges == 3);
 }
 
 }  // namespace girtd
