@@ -77,6 +77,18 @@ OpCount depth_sort_ops(size_t triangles, uint64_t comparisons) { return OpCount{
 
 // 3 sqrt, 4 div, 51 mul and 81 add make 172 flop; less the clip stage's 57,
 // the preparer's 115 (as additions, like the clip's share).
-OpCount preparer_ops() { return OpCount{115, 0, 0, 0}; }
+// Far edges: per edge, D at the two box corners where it is least and most
+// (2 mul, 2 add each) and two compares: 3 x (4 mul + 6 add).
+// Top-left rule: per edge, the window's middle projected onto the edge
+// (4 sub, 2 dot products of 2 mul + 1 add, 1 div, 2 compares to clamp, the
+// point: 2 mul + 2 add, 2 roundings as adds), D at that lattice point
+// (2 sub, 2 mul, 1 add), D at the start pixel from it (2 sub, 2 mul, 2 add)
+// and the tie test and bias (2 compares, 1 add): 3 x (22 add, 10 mul, 1 div).
+OpCount preparer_ops(const Params& p) {
+  OpCount ops{115, 0, 0, 0};
+  if (p.far_edges_constant) ops = ops + OpCount{6, 4, 0, 0} * 3;
+  if (p.fill_top_left) ops = ops + OpCount{22, 10, 1, 0} * 3;
+  return ops;
+}
 
 }  // namespace girtd

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "config/params.hpp"
 #include "frontend/triangulator.hpp"
 
 namespace girtd {
@@ -43,7 +44,9 @@ OpCount window_clip_ops();
 // Per frame: the keys of `triangles` triangles and the sort's comparisons.
 OpCount depth_sort_ops(size_t triangles, uint64_t comparisons);
 // Per triangle (thesis: 3 square roots, 4 divisions, 51 multiplications and
-// 81 additions in all, less the clip stage's share).
-OpCount preparer_ops();
+// 81 additions in all, less the clip stage's share), plus the work of the
+// preparer's options (config `preparer`): far edges as constants, the
+// top-left fill rule. Edge flags cost no arithmetic.
+OpCount preparer_ops(const Params& p);
 
 }  // namespace girtd

@@ -243,7 +243,7 @@ void memory_rows(const Params& p, std::vector<ClaimRow>& rows) {
 // child process: SystemC elaborates once per process).
 void preparer_rows(const Params& p, std::vector<ClaimRow>& rows) {
   const double target = p.target_preparer_triangles_per_s;
-  const double prep_flops = preparer_ops().flops();
+  const double prep_flops = preparer_ops(p).flops();
   rows.push_back({"preparer load", "40,000 triangles/s: 4.96 Mflop/s (124 flop; 172 from the parts, less 57 for the clip)",
                   fmt("%.0f flop per triangle (the thesis' parts): %.2f Mflop/s at %.0f triangles/s; ", prep_flops,
                       prep_flops * target / 1e6, target) +

@@ -137,7 +137,7 @@ sc_core::sc_fifo<Token<DdaParams>>& PipelineElaboration::preparer(sc_fifo<Token<
         if (preparer_->prepare(t, settings_[frame], *d) != PrepareResult::kReady) d.reset();
         if (tap_ && tap_->level() == TraceLevel::kTriangle) tap_->write(t);
         if (tap_ && tap_->level() == TraceLevel::kDda && d) tap_->write(*d);
-        w.push_back({preparer_ops().flops(), std::move(d)});
+        w.push_back({preparer_ops(p_).flops(), std::move(d)});
       },
       [this](size_t frame, Work<DdaParams>&) {
         if (tap_) tap_->begin_frame(settings_[frame]);

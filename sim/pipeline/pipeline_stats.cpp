@@ -77,7 +77,7 @@ void PipelineElaboration::collect(RunStats& s) const {
   t.had_page_wait_s = double(be.had_vram_wait_ticks) * tick_s;
   t.frame_clear_swap_s = double(back_end_->frame_ticks()) * tick_s;
   t.preparer_triangles = preparer_ ? prepared : 0;
-  if (preparer_) t.preparer_capacity_triangles_per_s = rate("preparer") / preparer_ops().flops();
+  if (preparer_) t.preparer_capacity_triangles_per_s = rate("preparer") / preparer_ops(p_).flops();
   s.timing = t;
 }
 

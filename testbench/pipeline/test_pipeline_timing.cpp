@@ -67,7 +67,12 @@ TEST_CASE("a slow preparer sets the pace: busy N x 115 flop / rate, the DDA star
   const RenderOutput out = run_pipeline("approx", trace, p, {});
   const RunStats& s = out.stats;
   const double per_triangle = 115.0 / rate;
-  REQUIRE(preparer_ops().flops() == 115.0);
+  REQUIRE(preparer_ops(Params::defaults()).flops() == 115.0);
+  // robust.json's options, by the breakdown in stage_costs.cpp: far edges
+  // 3 x 10, the top-left rule 3 x (22 + 10 + a division of 4).
+  const Params robust = Params::with_overrides(
+      {{"preparer", {{"far_edges", "constant"}, {"fill_rule", "top_left"}, {"edge_flags", true}}}}, "test");
+  CHECK(preparer_ops(robust).flops() == 115.0 + 30 + 108);
   CHECK(stage(s, "preparer").items == 40);
   CHECK(*stage(s, "preparer").busy_s == Approx(40 * per_triangle).epsilon(1e-9));
   REQUIRE(s.timing);
