@@ -305,7 +305,14 @@ module dda #(
   assign d_read = !hold && in_limits && ((state_q == S_CHECK && !y_past_end) || state_q == S_WALK ||
                                          state_q == S_RIGHT || state_q == S_LEFT || state_q == S_RUN);
   assign tri_end = !hold && state_q != S_IDLE && state_d == S_IDLE;
-  assign t_is_one = t[girtd_pkg::T_W-1:girtd_pkg::T_FRAC] == (girtd_pkg::T_W - girtd_pkg::T_FRAC)'(256);  // 1.0: not a clip
+  // T = 1.0 (256) is carried out as 255 by design: not a clip. Needs 10
+  // integer bits to be held at all (as models/dda tests it).
+  localparam int T_INT = girtd_pkg::T_W - girtd_pkg::T_FRAC;
+  if (T_INT >= 10) begin : g_t_one
+    assign t_is_one = t[girtd_pkg::T_W-1:girtd_pkg::T_FRAC] == T_INT'(256);
+  end else begin : g_t_no_one
+    assign t_is_one = 1'b0;
+  end
   if (WRAP_DETECT) begin : g_limits
     dda_limits u_limits (
         .clk_i, .rst_ni, .load_i(op == girtd_pkg::OP_LOAD), .clamped_i, .end_i(tri_end),

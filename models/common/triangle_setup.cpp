@@ -122,11 +122,12 @@ SharedEdge shared_edge(const TriangleSetup& s, int i, const Window& w) {
   e.len = std::sqrt(e.nx * e.nx + e.ny * e.ny);
   e.a = e.nx / e.len;
   e.b = e.ny / e.len;
-  // The window's middle projected onto the segment: the fixed-point walk's
-  // error grows with the distance from here, and both sides pick the same point.
+  // The window's middle projected onto the edge's line: the fixed-point
+  // walk's error grows with the distance from here (so it stays within the
+  // window's half diagonal), and both sides pick the same point.
   const double cx = 0.5 * (w.x0 + w.x1) - e.p.x, cy = 0.5 * (w.y0 + w.y1) - e.p.y;
   const double dx = q.x - e.p.x, dy = q.y - e.p.y;
-  const double t = std::clamp((cx * dx + cy * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+  const double t = (cx * dx + cy * dy) / (dx * dx + dy * dy);
   e.ref_x = static_cast<int>(std::clamp(std::round(e.p.x + t * dx), -2e9, 2e9));
   e.ref_y = static_cast<int>(std::clamp(std::round(e.p.y + t * dy), -2e9, 2e9));
   return e;

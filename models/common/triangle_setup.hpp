@@ -73,7 +73,7 @@ struct SharedEdge {
   double nx = 0, ny = 0, len = 1;  // normal of the direction P -> other end, unnormalized, and its length
   double a = 0, b = 0;             // the unit normal
   int sign = 1;                    // +1: this triangle's inside is the positive side
-  int ref_x = 0, ref_y = 0;        // the lattice point nearest the edge where it meets the window's middle
+  int ref_x = 0, ref_y = 0;        // the lattice point nearest the window's middle projected onto the edge's line
   // Normalized after the products, so a lattice point on an edge between
   // lattice points is exactly 0 (the tie the rule decides).
   double at(double x, double y) const { return sign * (nx * (x - p.x) + ny * (y - p.y)) / len; }

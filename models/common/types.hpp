@@ -21,8 +21,11 @@ struct Triangle {
   // of the same surface (a triangulator diagonal or a mesh-interior edge),
   // so it needs no antialiasing fringe (thesis 5.2.4's invisible edges).
   uint8_t interior_edges = 0;
-  int surface = -1;  // the front end's surface id (-1: not known)
+  int surface = -1;  // the front end's surface id (-1: not known), at most kMaxSurfaceId
 };
+
+// Surface ids up to here leave room for the seam counter's layer and flag bits.
+inline constexpr int kMaxSurfaceId = (1 << 29) - 1;
 
 // Inclusive pixel window (Xjmin..Xjmax, Yjmin..Yjmax of §3).
 struct Window {

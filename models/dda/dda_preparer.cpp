@@ -109,6 +109,7 @@ PrepareResult DdaPreparer::prepare(const Triangle& t, const FrameSettings& f, Dd
       switch (edge_over_box(d, x0, y0, box, hard ? 0 : q_raw)) {
         case BoxSide::kInside:  // never tested false here: a constant that cannot wrap
           d = EdgeRaw{};
+          out.hard_edges |= static_cast<uint8_t>(1u << i);  // no fringe either: D = 0 is inside, n = 1
           ++counts_.constant_edges;
           break;
         case BoxSide::kOutside:

@@ -27,6 +27,7 @@ void mark_interior_edges(std::vector<FrontTriangle>& frame) {
   for (size_t k = 0; k < frame.size(); ++k) {
     Triangle& t = frame[k].tri;
     t.interior_edges = 0;
+    if (t.surface < 0) continue;  // no surface, no neighbours of the same one
     for (int e = 0; e < 3; ++e) {
       Corner a{t.v[e].x, t.v[e].y}, b{t.v[(e + 1) % 3].x, t.v[(e + 1) % 3].y};
       if (b < a) std::swap(a, b);

@@ -14,18 +14,21 @@ int floor_clamped(double v, int hi) {
 
 }  // namespace
 
+RuleEdges::RuleEdges(const TriangleSetup& s, const FrameSettings& f, const EdgeRules& rules)
+    : s_(s), top_left_(rules.top_left) {
+  for (int i = 0; i < 3; ++i) {
+    if (top_left_) shared_[i] = shared_edge(s, i, f.window);
+    q_[i] = rules.edge_flags && s.interior[i] ? 0.0 : f.q;
+  }
+}
+
 bool rasterize_reference(const Triangle& t, const FrameSettings& f, const EdgeRules& rules,
                          const ReferenceSink& sink) {
   const auto setup = setup_triangle(t);
   if (!setup || !select_start_point(*setup, f.window)) return false;
   const TriangleSetup& s = *setup;
   const PixelBox box = fringe_box(s, f.q, f.window);
-  std::array<SharedEdge, 3> shared;
-  std::array<double, 3> q;  // each edge's fringe: none on an interior edge with edge flags
-  for (int i = 0; i < 3; ++i) {
-    if (rules.top_left) shared[i] = shared_edge(s, i, f.window);
-    q[i] = rules.edge_flags && s.interior[i] ? 0.0 : f.q;
-  }
+  const RuleEdges edges(s, f, rules);
   ReferenceSample smp;
   smp.layer = seam_layer(t, s);
   for (int y = box.y0; y <= box.y1; ++y) {
@@ -33,12 +36,9 @@ bool rasterize_reference(const Triangle& t, const FrameSettings& f, const EdgeRu
       bool inside = true;
       double n = 1.0;
       for (int i = 0; i < 3; ++i) {
-        smp.d[i] = rules.top_left ? shared[i].at(x, y) : s.edge[i].at(x, y);
-        const double ni = norm_q(smp.d[i], q[i]);
-        bool in = (q[i] > 0) ? (smp.d[i] > -q[i]) : (smp.d[i] >= 0);
-        if (q[i] == 0 && rules.top_left && smp.d[i] == 0) in = shared[i].owns_ties();
-        inside = inside && in;
-        n *= ni;
+        smp.d[i] = edges.distance(i, x, y);
+        inside = inside && edges.inside(i, smp.d[i]);
+        n *= norm_q(smp.d[i], edges.q(i));
       }
       if (!inside) continue;
       smp.x = x;
@@ -51,7 +51,7 @@ bool rasterize_reference(const Triangle& t, const FrameSettings& f, const EdgeRu
       smp.nf = std::clamp(smp.t, 0.0, 1.0) * n;
       smp.covered = n == 1.0;  // and not on a soft edge (the boundary, as models/dda counts it)
       for (int i = 0; i < 3; ++i)
-        if (q[i] > 0 && smp.d[i] == 0) smp.covered = false;
+        if (edges.q(i) > 0 && smp.d[i] == 0) smp.covered = false;
       sink(smp);
     }
   }

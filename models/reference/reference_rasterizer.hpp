@@ -31,6 +31,29 @@ struct EdgeRules {
   bool edge_flags = false;
 };
 
+// A triangle's three edges as the rules measure them: the distance (from
+// the shared evaluation with the top-left rule), each edge's fringe (none
+// on an interior edge with edge flags) and the inside test with its ties.
+// The reference draws by it; girtd stress's budget measures by it.
+class RuleEdges {
+ public:
+  RuleEdges(const TriangleSetup& s, const FrameSettings& f, const EdgeRules& rules);
+  double distance(int i, double x, double y) const {
+    return top_left_ ? shared_[i].at(x, y) : s_.edge[i].at(x, y);
+  }
+  double q(int i) const { return q_[i]; }
+  bool inside(int i, double d) const {
+    if (q_[i] > 0) return d > -q_[i];
+    return d > 0 || (d == 0 && (!top_left_ || shared_[i].owns_ties()));
+  }
+
+ private:
+  const TriangleSetup& s_;
+  bool top_left_;
+  std::array<SharedEdge, 3> shared_;
+  std::array<double, 3> q_;
+};
+
 // Emits every lattice pixel inside the fringe box with all D_i > -Q (Q > 0)
 // or all D_i >= 0 (Q = 0). Returns false when the triangle is discarded
 // (no area, or it misses the window).

@@ -105,8 +105,13 @@ int main(int argc, char** argv) {
     // variant (render on rtl; regress, bench and claims drive the RTL too).
     // A render whose input is missing fails at once, before any build.
     const bool drives_rtl =
-        (*render && ra.backend == "rtl" && std::filesystem::exists(ra.input)) || *regress || *bench || *claims;
-    const ConfigFiles& config = *render ? ra.config : *regress ? rg.config : *bench ? bench_config : claims_config;
+        (*render && ra.backend == "rtl" && std::filesystem::exists(ra.input)) || *regress || *bench || *claims ||
+        *stress;  // stress: the variant is built here, not inside a render's timeout
+    const ConfigFiles& config = *render ? ra.config
+                                : *regress ? rg.config
+                                : *bench   ? bench_config
+                                : *stress  ? st.config
+                                           : claims_config;
     if (drives_rtl) run_in_rtl_variant_if_needed(load_params(config), argv);
     if (*render) return run_render(ra);
     if (*claims) return run_claims(claims_config);

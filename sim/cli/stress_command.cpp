@@ -118,7 +118,13 @@ int run_stress(const StressArgs& a) {
   int passed = 0, flagged = 0, failed = 0;
   for (size_t i = 0; i < cases.size(); ++i) {
     const StressCase& c = cases[i];
-    const CaseResult r = run_case(c, work + "/" + c.name, a.config, params, a.timeout_s);
+    CaseResult r;
+    try {
+      r = run_case(c, work + "/" + c.name, a.config, params, a.timeout_s);
+    } catch (const std::exception& e) {  // an unreadable render is this case's FAIL, not the run's end
+      r.j.verdict = StressVerdict::kFail;
+      r.j.why = std::string("reading the renders: ") + e.what();
+    }
     const char* v = verdict_name(r.j.verdict);
     passed += r.j.verdict == StressVerdict::kExact;
     flagged += r.j.verdict == StressVerdict::kFlagged;

@@ -28,6 +28,7 @@ int run_process_timed(const std::vector<std::string>& args, const std::string& l
   const pid_t pid = fork();
   if (pid < 0) return -1;
   if (pid == 0) {
+    if (timeout_s > 0) setpgid(0, 0);  // its own process group: a timeout kills what it started too
     if (!log_path.empty()) {
       const int log = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
       if (log >= 0) {
@@ -45,7 +46,7 @@ int run_process_timed(const std::vector<std::string>& args, const std::string& l
     if (done < 0) return -1;
     if (done == pid) break;
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout_s) {
-      kill(pid, SIGKILL);
+      kill(-pid, SIGKILL);
       waitpid(pid, &status, 0);
       return kTimedOut;
     }

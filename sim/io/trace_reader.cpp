@@ -207,7 +207,7 @@ class TraceBuilder {
       p.expect_count(21, "numbers (X Y Z R G B T for each of 3 vertices), then optionally INTERIOR and SURFACE");
     Triangle t = read_triangle(p, 1, kScreenVertex);
     if (p.size() > 22) t.interior_edges = static_cast<uint8_t>(p.integer_in(22, "INTERIOR", 0, 7));
-    if (p.size() > 23) t.surface = static_cast<int>(p.integer_in(23, "SURFACE", 0, INT32_MAX));
+    if (p.size() > 23) t.surface = static_cast<int>(p.integer_in(23, "SURFACE", 0, kMaxSurfaceId));
     current().triangles.push_back(t);
   }
 

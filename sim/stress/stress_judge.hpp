@@ -1,15 +1,17 @@
 // The verdict on one `girtd stress` case (../shared/CONTRACT.md):
 //   exact    golden == rtl (picture, counts, numerics) and golden within the
 //            thesis' budget of the reference (below), no seams;
-//   flagged  every difference beyond the budget lies on triangles the run
-//            counted (a wrap or a clamp in `numerics`, or seams in
-//            `pixels_reblended`) and warned about;
+//   flagged  every difference beyond the budget lies on pixels a triangle
+//            the run counted (a wrap or a clamp in `numerics`) reaches, and
+//            golden and rtl warned of it; or the run counted seams
+//            (`pixels_reblended`) and warned of them;
 //   FAIL     a silent difference, golden != rtl, a crash or a hang.
 // The budget, from the formats (the thesis' 1 LSB and 0.125 px per 1024
-// steps, over the longest walk of 2048 steps): a pixel is excused when it
-// lies within the D error of an edge or in a fringe, or where two triangles'
-// depths are within the Z error; elsewhere each channel may differ by the
-// colour error (1 LSB of truncation plus the colour EP's error).
+// steps, stretched to the longest walk of 2048 steps: 0.25 px, and 1 LSB of
+// truncation plus 2 of the colour EP's error): a pixel is excused when it
+// lies within the D error of an edge or in a fringe (whose colour moves with
+// the edge), or where two triangles' depths are within the Z error;
+// elsewhere each channel may differ by the colour error.
 #pragma once
 
 #include <string>
