@@ -204,7 +204,12 @@ std::vector<ReportKey> make_keys() {
           [](auto& r) { return r.s.preparer ? json::object() : json(); }),
       preparer_key("prepared", "parameter sets handed to the DDA", &PreparerCounts::prepared),
       preparer_key("degenerate", "triangles without area", &PreparerCounts::degenerate),
-      preparer_key("off_window", "triangles without a start point in the window", &PreparerCounts::off_window),
+      preparer_key("off_window",
+                   "triangles without a start point in the window (with `preparer.far_edges` constant, also "
+                   "those wholly outside an edge over the pixel box)",
+                   &PreparerCounts::off_window),
+      preparer_key("constant_edges", "edges sent as constants (`preparer.far_edges` constant: the line misses the pixel box)",
+                   &PreparerCounts::constant_edges),
       preparer_key("no_lattice_row", "triangles crossing no pixel row", &PreparerCounts::no_lattice_row),
       key("preparer.clamped_values", "count", "start values or derivatives that did not fit their EP (per EP: "
           "`numerics`)", kHardware, [](auto& r) { return json(r.s.preparer->clamped_values()); }),

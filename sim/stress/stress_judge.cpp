@@ -18,7 +18,7 @@ constexpr double kLongestWalk = 2048;  // steps: across and down the screen
 struct Zones {
   int width = 0;
   std::vector<uint8_t> edge;      // within the D error of an edge, or in a fringe
-  std::vector<uint8_t> affected;  // near a triangle the run counted
+  std::vector<uint8_t> affected;  // drawn (golden) or covered (reference) by a triangle the run counted
   std::vector<uint8_t> near;      // near triangles so far (z conflicts)
   std::vector<float> z;           // the reference depth of the last near triangle
   std::vector<uint8_t> z_conflict;
@@ -26,8 +26,7 @@ struct Zones {
 
 // Marks the lattice points within the budget of triangle `t` (its edge
 // distances as the configured rules measure them).
-void mark_triangle(const Triangle& t, const FrameSettings& f, const Params& p, const StressBudget& b, bool affected,
-                   Zones& z) {
+void mark_triangle(const Triangle& t, const FrameSettings& f, const Params& p, const StressBudget& b, Zones& z) {
   const auto setup = setup_triangle(t);
   if (!setup) return;
   const TriangleSetup& s = *setup;
@@ -45,7 +44,6 @@ void mark_triangle(const Triangle& t, const FrameSettings& f, const Params& p, c
       if (!near) continue;
       const size_t k = static_cast<size_t>(y) * z.width + x;
       z.edge[k] |= at_edge;
-      z.affected[k] |= affected;
       const double depth = s.attr[kZ].at(x, y);
       if (z.near[k] && std::fabs(depth - z.z[k]) <= b.z_units) z.z_conflict[k] = 1;
       z.near[k] = 1;
@@ -53,16 +51,28 @@ void mark_triangle(const Triangle& t, const FrameSettings& f, const Params& p, c
     }
 }
 
-// The triangles the run counted, as golden's preparer and DDA count them.
-std::vector<bool> counted_triangles(const TraceFrame& frame, const Params& p) {
+// The triangles the run counted, as golden's preparer and DDA count them;
+// marks the pixels each draws (golden) or covers (the reference) in `z.affected`.
+std::vector<bool> counted_triangles(const TraceFrame& frame, const Params& p, Zones& z) {
   DdaPreparer preparer(p);
   const DdaEngine engine(p);
+  const EdgeRules rules{p.fill_top_left, p.edge_flags};
   std::vector<bool> out;
   DdaParams d;
+  auto mark = [&](int x, int y) {
+    if (x >= 0 && y >= 0 && x < z.width && y < static_cast<int>(z.affected.size()) / z.width)
+      z.affected[static_cast<size_t>(y) * z.width + x] = 1;
+  };
   for (const Triangle& t : frame.triangles) {
     bool hit = false;
+    std::vector<std::pair<int, int>> drawn;
     if (preparer.prepare(t, frame.settings, d) == PrepareResult::kReady)
-      hit = engine.run(d, nullptr).numerics.triangles_affected > 0;
+      hit = engine.run(d, [&](const DdaEmit& e) { drawn.push_back({e.pixel.x, e.pixel.y}); })
+                .numerics.triangles_affected > 0;
+    if (hit) {
+      for (const auto& [x, y] : drawn) mark(x, y);
+      rasterize_reference(t, frame.settings, rules, [&](const ReferenceSample& s) { mark(s.x, s.y); });
+    }
     out.push_back(hit);
   }
   return out;
@@ -110,9 +120,9 @@ StressJudgement judge_stress_case(const Trace& triangles, const Params& p, const
           std::vector<uint8_t>(n)};
   if (!triangles.frames.empty()) {
     const TraceFrame& frame = triangles.frames.back();  // frame.png is the last frame
-    const std::vector<bool> counted = counted_triangles(frame, p);
+    const std::vector<bool> counted = counted_triangles(frame, p, z);
     for (size_t i = 0; i < frame.triangles.size(); ++i) {
-      mark_triangle(frame.triangles[i], frame.settings, p, b, counted[i], z);
+      mark_triangle(frame.triangles[i], frame.settings, p, b, z);
       j.affected_triangles += counted[i];
     }
   }

@@ -2,7 +2,8 @@
 //   exact    golden == rtl (picture, counts, numerics) and golden within the
 //            thesis' budget of the reference (below), no seams;
 //   flagged  every difference beyond the budget lies on pixels a triangle
-//            the run counted (a wrap or a clamp in `numerics`) reaches, and
+//            the run counted (a wrap or a clamp in `numerics`) draws in
+//            golden or covers in the reference, and
 //            golden and rtl warned of it; or the run counted seams
 //            (`pixels_reblended`) and warned of them;
 //   FAIL     a silent difference, golden != rtl, a crash or a hang.
