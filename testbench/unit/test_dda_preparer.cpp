@@ -199,7 +199,8 @@ TEST_CASE("preparer: edge flags take the fringe off an interior edge", "[prepare
 TEST_CASE("preparer: far edges as constants", "[preparer]") {
   const Triangle huge = tri({{{-1e6, -1e6, 0}, {1e6, -1e6, 0}, {511.5, 1e6, 0}}});
   DdaParams d;
-  DdaPreparer as_written(Params::defaults());
+  const Params defaults = Params::defaults();  // the preparer keeps a reference
+  DdaPreparer as_written(defaults);
   REQUIRE(as_written.prepare(huge, frame(0), d) == PrepareResult::kReady);
   CHECK(d.clamped);
   const Params far = Params::with_overrides({{"preparer", {{"far_edges", "constant"}}}}, "test");
