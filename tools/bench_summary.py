@@ -11,6 +11,8 @@ Reads testbench/measured/bench.json (copied from out/bench/bench.json by
             recorded: modeled figures are deterministic
   numerics  wrapped EP values in use on a few inputs, on golden (models/dda/README.md);
             rendered now, deterministic
+  culling   culling in front of lighting on every sample scene, modeled (README.md)
+  pruning   simulator pruning's wall-time ratio per sample input (README.md)
 """
 import json
 import pathlib
@@ -76,6 +78,38 @@ def timing(b):
             f"{demo['rtl_dda_clocks_per_wall_s']:.1e} DDA clocks per wall second there).\n")
 
 
+def culling(b):
+    out = [source(b), "",
+           "| scene | polygons | objects culled (their polygons) | thesis: ms, Mpixel/s | `culling.objects`: ms, "
+           "Mpixel/s | frame | `presets/culling.json`: back faces culled, ms, Mpixel/s | pixels changed |",
+           "|---|---|---|---|---|---|---|---|"]
+    for r in b["culling"]:
+        ms = lambda k: 1e3 * r[k]
+        out.append(f"| `{pathlib.Path(r['input']).name}` | {r['polygons']:,} | {r['objects_culled']} of {r['objects']} "
+                   f"({r['object_culled_polygons']:,}) | {ms('thesis_modeled_s'):.1f}, {r['thesis_mpixels_per_s']:.2f} | "
+                   f"{ms('objects_modeled_s'):.1f}, {r['objects_mpixels_per_s']:.2f} | "
+                   f"{'same' if r['objects_same_frame'] else 'DIFFERS'} | {r['back_faces_culled']:,}, "
+                   f"{ms('both_modeled_s'):.1f}, {r['both_mpixels_per_s']:.2f} | {r['both_pixels_changed']:,} |")
+    return "\n".join(out) + "\n"
+
+
+def pruning(b):
+    rows = b["pruning"]
+    same = sum(1 for r in rows if r["same_outputs"])
+    poly = [r for r in rows if r["left_out"] and r["left_out"][0]["unit"] == "lighting"]
+    oov = next((r for r in rows if r["input"].endswith("out_of_view.json")), None)
+    out = [source(b), "",
+           f"- Outputs equal but for `wall_s` and `left_out` on {same} of {len(rows)} inputs.",
+           f"- Wall-time ratio `--no-prune` / pruned on approx (median of 5 each): "
+           f"{span([r['speedup'] for r in poly], '{:.2f}x')} on the {len(poly)} polygon-level inputs (median "
+           f"{sorted(r['speedup'] for r in poly)[len(poly) // 2]:.2f}x), "
+           f"{span([r['speedup'] for r in rows if r not in poly], '{:.2f}x')} on the others (the wrap detector "
+           f"only)"
+           + (f"; `out_of_view.json` {oov['speedup']:.2f}x ({oov['no_prune_wall_s']:.3f} s against "
+              f"{oov['pruned_wall_s']:.3f} s)." if oov else ".")]
+    return "\n".join(out) + "\n"
+
+
 def demo(build):
     with tempfile.TemporaryDirectory() as out:
         subprocess.run([str(build / "bin/girtd"), "render", "traces/scenes/demo.json", "--backend", "approx", "--out",
@@ -131,4 +165,5 @@ if __name__ == "__main__":
         print(numerics(build), end="")
     else:
         bench = json.loads(RECORD.read_text())
-        print({"pipeline": pipeline, "coupling": coupling, "timing": timing}[sys.argv[2]](bench), end="")
+        sections = {"pipeline": pipeline, "coupling": coupling, "timing": timing, "culling": culling, "pruning": pruning}
+        print(sections[sys.argv[2]](bench), end="")

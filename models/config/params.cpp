@@ -113,6 +113,11 @@ Params build(const ConfigLayers& layers) {
     p.fill_top_left = fill == "top_left";
     p.edge_flags = r.flag("preparer.edge_flags");
 
+    p.cull_objects = r.flag("culling.objects");
+    const std::string back = r.text("culling.back_faces");
+    if (back != "scene" && back != "always") r.fail("culling.back_faces", "must be \"scene\" or \"always\"");
+    p.cull_back_faces_always = back == "always";
+
     const std::string omn = r.text("had.one_minus_nf");
     if (omn == "exact") p.one_minus_nf = OneMinusNf::kExact;
     else if (omn == "invert_bits") p.one_minus_nf = OneMinusNf::kInvertBits;

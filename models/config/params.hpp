@@ -54,6 +54,11 @@ struct Params {
   bool fill_top_left;       // a shared edge is evaluated alike from both sides; its ties go to one side
   bool edge_flags;          // a triangle's interior edges (Triangle::interior_edges) get no AA fringe
 
+  // Culling in front of lighting (config `culling`; off in the thesis'
+  // design, on in config/presets/culling.json).
+  bool cull_objects;            // whole objects whose bounding sphere misses the view volume
+  bool cull_back_faces_always;  // "always": every frame culls back faces (transparent surfaces exempt); "scene": as the input says
+
   OneMinusNf one_minus_nf;
   double had_access_ns;
   double had_blend_extra_ns;  // multiplier + adder time of a blended pixel (§6)

@@ -3,6 +3,7 @@
 // sequencer (the hardware state machine and the thesis' DDApix).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -21,11 +22,11 @@ struct DdaRegisters {
 
 class DdaDatapath {
  public:
-  DdaDatapath(const Params& p, const DdaParams& in) : in_(in), xy_bits_(p.xy_bits) {
-    for (int i = 0; i < kEpCount; ++i) fmt_[i] = &p.ep_d;
-    fmt_[kEpR] = fmt_[kEpG] = fmt_[kEpB] = &p.ep_color;
-    fmt_[kEpT] = &p.ep_t;
-    fmt_[kEpZ] = &p.ep_z;
+  // `shadow`: keep the wrap detector's registers; false only where no EP can
+  // wrap (may_wrap), and then exact() is pix().
+  DdaDatapath(const Params& p, const DdaParams& in, bool shadow = true)
+      : in_(in), xy_bits_(p.xy_bits), shadow_(shadow) {
+    for (int i = 0; i < kEpCount; ++i) fmt_[i] = &format_of(p, i);
     for (int i = 0; i < kEpCount; ++i) detect_bits_[i] = fmt_[i]->total_bits() + p.guard_bits(*fmt_[i]);
     pix_.x = in.x0;
     pix_.y = in.y0;
@@ -45,34 +46,63 @@ class DdaDatapath {
   // hw/dda/dda_ep.sv): where they differ, the hardware holds a wrapped value. (The adders are modular, so a value
   // that wraps and steps back is right again: only a wrapped value in use
   // changes the picture.)
-  const DdaRegisters& exact() const { return exact_; }
+  const DdaRegisters& exact() const { return shadow_ ? exact_ : pix_; }
   void save() {
     aux_ = pix_;
-    exact_aux_ = exact_;
+    if (shadow_) exact_aux_ = exact_;
   }
   void restore() {
     pix_ = aux_;
-    exact_ = exact_aux_;
+    if (shadow_) exact_ = exact_aux_;
   }
 
   const DdaRegisters& pix() const { return pix_; }
   const FixFormat& format(int ep) const { return *fmt_[ep]; }
+  static const FixFormat& format_of(const Params& p, int ep) {
+    if (ep == kEpR || ep == kEpG || ep == kEpB) return p.ep_color;
+    if (ep == kEpT) return p.ep_t;
+    if (ep == kEpZ) return p.ep_z;
+    return p.ep_d;
+  }
 
  private:
   // One EP's adder: W bits, wrapping like the hardware's.
   void add(int i, int64_t step) {
     pix_.v[i] = wrap(pix_.v[i] + step, *fmt_[i]);
+    if (!shadow_) return;
     const uint64_t sum = static_cast<uint64_t>(exact_.v[i]) + static_cast<uint64_t>(step);  // modular, as the RTL's
     exact_.v[i] = wrap_to_bits(static_cast<int64_t>(sum), detect_bits_[i]);
   }
 
   const DdaParams& in_;
   int xy_bits_;
+  bool shadow_;
   DdaRegisters exact_, exact_aux_;
   const FixFormat* fmt_[kEpCount];
   int detect_bits_[kEpCount];  // register width + guard bits
   DdaRegisters pix_, aux_;
 };
+
+// Whether an EP register can wrap while the DDA walks this triangle. Until
+// one wraps, a register holds v0 + (X - x0) dX + (Y - y0) dY: linear, so its
+// extremes over what the DDA can visit (X between the limits and the start,
+// Y from the start to one row past Ymax) lie at the corners. When they fit
+// every EP's format, nothing wraps and the wrap detector has nothing to see.
+inline bool may_wrap(const Params& p, const DdaParams& in) {
+  const int64_t xs[2] = {std::min(in.x0, in.xmin), std::max(in.x0, in.xmax)};
+  const int64_t ys[2] = {in.y0, std::max(in.y0, in.ymax + 1)};
+  for (int i = 0; i < kEpCount; ++i) {
+    const FixFormat& f = DdaDatapath::format_of(p, i);
+    const int64_t v0 = wrap(in.ep[i].v, f);  // the datapath starts from the wrapped value
+    for (int64_t x : xs)
+      for (int64_t y : ys) {
+        const __int128 v = static_cast<__int128>(v0) + static_cast<__int128>(x - in.x0) * in.ep[i].dx +
+                           static_cast<__int128>(y - in.y0) * in.ep[i].dy;
+        if (v < f.raw_min() || v > f.raw_max()) return true;
+      }
+  }
+  return false;
+}
 
 // An output stage (fig. 4.20) does not carry the EP's integer part out as
 // it is: clipped to 0..2^out_bits - 1, or cut to its low bits.

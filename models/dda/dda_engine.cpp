@@ -9,7 +9,7 @@
 namespace girtd {
 
 DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const ClockProbe& probe) const {
-  DdaDatapath dp(params_, in);
+  DdaDatapath dp(params_, in, !skip_unreachable_wraps_ || may_wrap(params_, in));
   // One Norm unit per edge: an interior edge's (edge flags) has no fringe.
   auto norm_unit = [&](int e) {
     return NormUnit(params_.ep_d, params_.norm_frac_bits, (in.hard_edges >> e) & 1 ? 0.0 : in.q);

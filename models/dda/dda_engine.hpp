@@ -49,11 +49,15 @@ class DdaEngine {
   using ClockProbe = std::function<void(const DdaClock&)>;
 
   explicit DdaEngine(const Params& p) : params_(p) {}
+  // Simulator pruning: no wrap-detector registers for a triangle that cannot
+  // wrap (may_wrap); its numerics are the same.
+  void skip_unreachable_wraps(bool skip) { skip_unreachable_wraps_ = skip; }
 
   DdaRunStats run(const DdaParams& in, const PixelSink& sink, const ClockProbe& probe = {}) const;
 
  private:
   const Params& params_;
+  bool skip_unreachable_wraps_ = false;
 };
 
 }  // namespace girtd

@@ -51,32 +51,66 @@ std::vector<Point2> plane_coordinates(const std::vector<CameraVertex>& v, bool& 
 
 }  // namespace
 
-void FrontEndStages::begin_frame(const WorldFrame& frame, const Window& window) {
+void FrontEndStages::begin_frame(const WorldFrame& frame, const Window& window, double q) {
   frame_ = &frame;
   window_ = window;
+  depth_range_margin_px_ = culling_margin_px(q) - 0.5;
+  if (options_.cull_objects || options_.prune_lighting_out_of_view)
+    view_volume_ = ViewVolume(frame.camera, frame.focal_distance, screen_, window, culling_margin_px(q));
   normals_.clear();  // made by the first light() of the frame (only the lighting stage needs them)
   zmin_ = std::numeric_limits<double>::infinity();
   zmax_ = -zmin_;
   created_any_ = false;
 }
 
+bool FrontEndStages::keep_object(const WorldObject& object) {
+  counts_.polygons += object.count;
+  ++counts_.objects;
+  if (!options_.cull_objects || !view_volume_.misses(bounding_sphere(frame_->polygons, object))) return true;
+  ++counts_.objects_culled;
+  counts_.object_culled_polygons += object.count;
+  for (size_t i = object.first; i < object.first + object.count; ++i) {
+    counts_.object_culled_corners += frame_->polygons[i].p.size();
+    counts_.object_culled_corner_lights += frame_->polygons[i].p.size() * frame_->lights.directional.size();
+  }
+  return false;
+}
+
+bool FrontEndStages::keep_polygon(size_t i) {
+  const WorldFrame& frame = *frame_;
+  const WorldPolygon& poly = frame.polygons[i];
+  // No area has no facing: such a polygon goes on, and lighting drops it.
+  if (!back_face_test_on() || has_no_area(poly.p) || !is_back_face(poly, frame.camera.centre)) return true;
+  const Surface& surface = frame.surfaces.at(static_cast<size_t>(poly.surface));
+  if (!frame.cull_back_faces && (surface.t_min > 0 || surface.t_max > 0)) {
+    // Forced by the config, not asked for by the input: a transparent
+    // surface's back faces show through its front, so they stay.
+    ++counts_.back_faces_exempt;
+    counts_.exempt_surfaces.insert(poly.surface);
+    return true;
+  }
+  ++counts_.culled;
+  counts_.culled_corners += poly.p.size();
+  counts_.culled_corner_lights += poly.p.size() * frame.lights.directional.size();
+  return false;
+}
+
 std::optional<FrontPolygon> FrontEndStages::light(size_t i) {
   const WorldFrame& frame = *frame_;
   const WorldPolygon& poly = frame.polygons[i];
-  ++counts_.polygons;
-  if (has_no_area(poly.p)) {  // decided in world space, before culling: no area has no facing
+  if (has_no_area(poly.p)) {  // decided in world space; keep_polygon passed it on: no area has no facing
     ++counts_.degenerate_polygons;
     return std::nullopt;
   }
   const Camera& cam = frame.camera;
-  if (frame.cull_back_faces && is_back_face(poly, cam.centre)) {
-    ++counts_.culled;
-    return std::nullopt;
+  FrontPolygon out;
+  out.source = i;
+  if (options_.prune_lighting_out_of_view && view_volume_.misses(poly.p)) {
+    for (const Vec3& p : poly.p) out.v.push_back({p, 0, 0, 0, 1, false});  // its colours are never drawn
+    return out;
   }
   if (normals_.empty()) normals_ = vertex_normals(frame.polygons);
   const Surface& surface = frame.surfaces.at(static_cast<size_t>(poly.surface));
-  FrontPolygon out;
-  out.source = i;
   for (size_t k = 0; k < poly.p.size(); ++k) {
     const LitVertex lit = light_vertex(surface, frame.lights, normals_[i][k], normalized(cam.centre - poly.p[k]));
     out.v.push_back({poly.p[k], lit.r, lit.g, lit.b, lit.t, false});
@@ -100,6 +134,19 @@ std::optional<FrontPolygon> FrontEndStages::depth_clip(const FrontPolygon& p) {
 }
 
 void FrontEndStages::note_depths(const FrontPolygon& p) {
+  // Only polygons that can reach the window set the depth range: geometry
+  // beside the window wastes no Z resolution, and object culling (whose
+  // margin is half a pixel wider) leaves every Zp as it was.
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (const CameraVertex& v : p.v) {
+    const PlanePoint pp = girtd::project(v.s, frame_->camera.d_over_s);
+    x0 = std::min(x0, screen_.x(pp.xp));
+    x1 = std::max(x1, screen_.x(pp.xp));
+    y0 = std::min(y0, screen_.y(pp.yp));
+    y1 = std::max(y1, screen_.y(pp.yp));
+  }
+  const double m = depth_range_margin_px_;
+  if (x1 < window_.x0 - m || x0 > window_.x1 + m || y1 < window_.y0 - m || y0 > window_.y1 + m) return;
   for (const CameraVertex& v : p.v) {
     if (v.created) {
       created_any_ = true;

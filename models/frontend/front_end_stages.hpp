@@ -1,7 +1,7 @@
 // The front end of §2 cut at its stage boundaries, so that a timed pipeline
 // (sim/pipeline) can run one stage per module and FrontEnd::run_frame can
 // run them back to back: both give the same triangles in the same order.
-//   light -> view -> depth_clip -> [projection holds the frame: note_depths,
+//   cull -> light -> view -> depth_clip -> [projection holds the frame: note_depths,
 //   then depth_map] -> project -> triangulate -> window_select -> [depth sort
 //   holds the frame: sort]
 // A stage returning nullopt (or nothing) dropped the item and counted why.
@@ -16,6 +16,7 @@
 #include "frontend/camera_vertex.hpp"
 #include "frontend/depth_sort.hpp"
 #include "frontend/frontend_counts.hpp"
+#include "frontend/object_culling.hpp"
 #include "frontend/projection.hpp"
 #include "frontend/triangulator.hpp"
 #include "frontend/world_frame.hpp"
@@ -58,23 +59,48 @@ struct Triangulated {
   size_t corners = 0;
 };
 
+// What the front end is built to leave out: the modeled hardware's culling
+// (config `culling`) and the simulator's pruning (sim/backends/prune_plan).
+struct FrontEndOptions {
+  bool cull_objects = false;            // bounding-sphere culling of whole objects (culling.objects)
+  bool cull_back_faces_always = false;  // back faces culled in every frame (culling.back_faces "always")
+  // Simulator only: a polygon wholly outside the view volume is not lit
+  // (the depth clip or the window clip drops all it makes; its lighting
+  // flops are still charged).
+  bool prune_lighting_out_of_view = false;
+};
+
+// The AA fringe's width plus a pixel for rounding: how far outside the window
+// the view volume of object culling reaches, in pixels.
+inline double culling_margin_px(double q) { return q + 1; }
+
 class FrontEndStages {
  public:
   // `depth_max`: P of the Zp map (config depth.max_mapped).
-  FrontEndStages(ScreenMap screen, double depth_max) : screen_(screen), depth_max_(depth_max) {}
+  FrontEndStages(ScreenMap screen, double depth_max, FrontEndOptions options = {})
+      : screen_(screen), depth_max_(depth_max), options_(options) {}
 
   // Each stage's instance is told the frame it is working on (stages run
   // apart work on different frames at once). Vertex normals are not charged
-  // as work: the thesis' database stores them.
-  void begin_frame(const WorldFrame& frame, const Window& window);
+  // as work: the thesis' database stores them. `q`: the frame's AA width.
+  void begin_frame(const WorldFrame& frame, const Window& window, double q);
   const WorldFrame& frame() const { return *frame_; }
+  const FrontEndOptions& options() const { return options_; }
 
-  // Lighting, with the no-area and back-face tests before it.
+  // Culling, in front of lighting: whole objects by their bounding sphere
+  // (when culling.objects is on; every polygon of the object counts as
+  // entering the front end), then back faces polygon by polygon.
+  bool keep_object(const WorldObject& object);
+  bool back_face_test_on() const { return frame_->cull_back_faces || options_.cull_back_faces_always; }
+  bool keep_polygon(size_t polygon);
+
+  // Lighting, with the no-area test before it.
   std::optional<FrontPolygon> light(size_t polygon);
   void view(FrontPolygon& p) const;
   // Keeps Zs > C; nullopt when nothing is left.
   std::optional<FrontPolygon> depth_clip(const FrontPolygon& p);
-  // Projection's frame-long hold: every clipped polygon's depths, then the map.
+  // Projection's frame-long hold: the depths of every clipped polygon whose
+  // screen box meets the window (widened by the fringe), then the map.
   void note_depths(const FrontPolygon& p);
   DepthMap depth_map() const;
   // Repeated corners and no-area slivers the clip made are dropped here.
@@ -90,7 +116,10 @@ class FrontEndStages {
  private:
   ScreenMap screen_;
   double depth_max_;
+  FrontEndOptions options_;
   const WorldFrame* frame_ = nullptr;
+  ViewVolume view_volume_;
+  double depth_range_margin_px_ = 0;
   Window window_{};
   std::vector<std::vector<Vec3>> normals_;
   double zmin_ = 0, zmax_ = 0;

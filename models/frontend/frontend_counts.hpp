@@ -3,12 +3,22 @@
 #pragma once
 
 #include <cstdint>
+#include <set>
 
 namespace girtd {
 
 struct FrontendCounts {
   uint64_t polygons = 0;                 // polygons entering the front end
+  uint64_t objects = 0;                  // objects entering it (a scene's models; WorldObject)
+  uint64_t objects_culled = 0;           // objects whose bounding sphere misses the view volume: removed
+  uint64_t object_culled_polygons = 0;   // their polygons
   uint64_t culled = 0;                   // back faces removed (culling on)
+  uint64_t back_faces_exempt = 0;        // back faces of transparent surfaces kept under culling.back_faces "always"
+  std::set<int> exempt_surfaces;         // their surface ids
+  // Corners, and corners x directional lights, of the polygons culling
+  // removed: what the flops they would have cost are computed from.
+  uint64_t object_culled_corners = 0, object_culled_corner_lights = 0;
+  uint64_t culled_corners = 0, culled_corner_lights = 0;
   uint64_t clipped = 0;                  // polygons cut by the depth clip (some vertex at Zs <= C)
   uint64_t clipped_away = 0;             // polygons wholly at Zs <= C: dropped
   uint64_t degenerate_polygons = 0;      // no area (polygon_shape.hpp), at input or after the clip: dropped
@@ -27,7 +37,16 @@ struct FrontendCounts {
   // Counts of stages run apart (one per pipeline module) add up.
   FrontendCounts& operator+=(const FrontendCounts& o) {
     polygons += o.polygons;
+    objects += o.objects;
+    objects_culled += o.objects_culled;
+    object_culled_polygons += o.object_culled_polygons;
     culled += o.culled;
+    back_faces_exempt += o.back_faces_exempt;
+    exempt_surfaces.insert(o.exempt_surfaces.begin(), o.exempt_surfaces.end());
+    object_culled_corners += o.object_culled_corners;
+    object_culled_corner_lights += o.object_culled_corner_lights;
+    culled_corners += o.culled_corners;
+    culled_corner_lights += o.culled_corner_lights;
     clipped += o.clipped;
     clipped_away += o.clipped_away;
     degenerate_polygons += o.degenerate_polygons;

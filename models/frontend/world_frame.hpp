@@ -4,6 +4,8 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <stdexcept>
 #include <vector>
 
 #include "frontend/vec3.hpp"
@@ -51,6 +53,13 @@ struct WorldPolygon {
   int source_line = 0;  // where it came from, for error messages
 };
 
+// Consecutive polygons culled together (a scene's model): config
+// culling.objects tests their bounding sphere against the view volume.
+struct WorldObject {
+  size_t first = 0;  // index of its first polygon
+  size_t count = 0;
+};
+
 struct WorldFrame {
   Camera camera;
   LightSet lights;
@@ -58,6 +67,21 @@ struct WorldFrame {
   double focal_distance = 0;  // C: the depth clip keeps Zs > C
   bool cull_back_faces = false;
   std::vector<WorldPolygon> polygons;
+  std::vector<WorldObject> objects;  // cover `polygons` in order; empty: the frame is one object
 };
+
+// The frame's objects that hold polygons, or the whole frame as one when it
+// names none. The readers make them cover the polygons in order.
+inline std::vector<WorldObject> frame_objects(const WorldFrame& w) {
+  std::vector<WorldObject> out;
+  size_t next = 0;
+  for (const WorldObject& o : (w.objects.empty() ? std::vector<WorldObject>{{0, w.polygons.size()}} : w.objects)) {
+    if (o.first != next) throw std::logic_error("WorldFrame::objects do not cover the polygons in order");
+    next += o.count;
+    if (o.count > 0) out.push_back(o);
+  }
+  if (next != w.polygons.size()) throw std::logic_error("WorldFrame::objects do not cover every polygon");
+  return out;
+}
 
 }  // namespace girtd

@@ -9,51 +9,76 @@ double OpCount::flops() const {
 namespace {
 
 // Newell normal: per corner 3 x (2 add + 1 mul).
-OpCount newell(size_t n) { return OpCount{6, 3, 0, 0} * n; }
+constexpr OpCount kNewellCorner{6, 3, 0, 0};
+OpCount newell(size_t n) { return kNewellCorner * n; }
 // |v| of a 3-vector: 3 mul, 2 add, 1 sqrt; normalizing adds 1 div and 3 mul.
 constexpr OpCount kLength{2, 3, 0, 1};
 constexpr OpCount kNormalize{2, 6, 1, 1};
 constexpr OpCount kDot{2, 3, 0, 0};
 
 // polygon_shape's no-area test: Newell normal, its length, the perimeter
-// (a length per edge) and one compare.
-OpCount area_test(size_t n) { return newell(n) + kLength + (kLength + OpCount{4, 0, 0, 0}) * n + OpCount{1, 2, 0, 0}; }
+// (a length per edge) and one compare: a fixed part and a part per corner.
+constexpr OpCount kAreaTestFixed = kLength + OpCount{1, 2, 0, 0};
+constexpr OpCount kAreaTestPerCorner = kNewellCorner + kLength + OpCount{4, 0, 0, 0};
+
+// Lighting per corner: E = unit(eye - P) (3 sub + normalize); ambient R Id
+// (3 mul); transparency Tf = Tmin + (Tmax - Tmin)|N.E|, T = 1 - Tf (dot,
+// abs, 3 add, 1 mul); saturation of R, G, B and T (8 compares).
+constexpr OpCount kLightCorner = OpCount{3, 0, 0, 0} + kNormalize + OpCount{0, 3, 0, 0} + kDot +
+                                 OpCount{4, 1, 0, 0} + OpCount{8, 0, 0, 0};
+// Per corner and light: N.I and its sign; diffuse R If (N.I) per colour
+// (2 mul, 1 add); reflection 2(N.I)N - I (4 mul, 3 sub) and its dot with E,
+// clamp; the power by exp(n ln x) (two series, as a square root each, plus
+// 1 mul); the angle acos(N.I) (as a square root); CRE interpolation (1 div,
+// 2 add, 1 mul); 255 CRE pow If (3 mul) added to each colour (3 add).
+constexpr OpCount kLightCornerLight = kDot + OpCount{1, 0, 0, 0} + OpCount{3, 6, 0, 0} + OpCount{3, 4, 0, 0} + kDot +
+                                      OpCount{1, 0, 0, 0} + OpCount{0, 1, 0, 2} + OpCount{0, 0, 0, 1} +
+                                      OpCount{2, 1, 1, 0} + OpCount{3, 3, 0, 0};
+
+// The view transform per corner: [Xs Ys Zs] = (P - C) T, 3 sub, 9 mul, 6 add.
+constexpr OpCount kViewCorner{9, 9, 0, 0};
+// The depth clip's test per corner: one compare.
+constexpr OpCount kDepthTestCorner{1, 0, 0, 0};
 
 }  // namespace
 
-OpCount lighting_ops(size_t n, size_t lights, bool culling) {
-  OpCount ops = area_test(n);
-  // Back face: centroid (3 add per corner, 3 mul by 1/n), one dot, one compare.
-  if (culling) ops = ops + OpCount{3 * n + 3 + 1, 3, 1, 0} + kDot;
-  // Per corner: E = unit(eye - P) (3 sub + normalize); ambient R Id (3 mul);
-  // transparency Tf = Tmin + (Tmax - Tmin)|N.E|, T = 1 - Tf (dot, abs, 3 add,
-  // 1 mul); saturation of R, G, B and T (8 compares).
-  const OpCount corner = OpCount{3, 0, 0, 0} + kNormalize + OpCount{0, 3, 0, 0} + kDot + OpCount{4, 1, 0, 0} +
-                         OpCount{8, 0, 0, 0};
-  // Per corner and light: N.I and its sign; diffuse R If (N.I) per colour
-  // (2 mul, 1 add); reflection 2(N.I)N - I (4 mul, 3 sub) and its dot with E,
-  // clamp; the power by exp(n ln x) (two series, as a square root each, plus
-  // 1 mul); the angle acos(N.I) (as a square root); CRE interpolation (1 div,
-  // 2 add, 1 mul); 255 CRE pow If (3 mul) added to each colour (3 add).
-  const OpCount per_light = kDot + OpCount{1, 0, 0, 0} + OpCount{3, 6, 0, 0} + OpCount{3, 4, 0, 0} + kDot +
-                            OpCount{1, 0, 0, 0} + OpCount{0, 1, 0, 2} + OpCount{0, 0, 0, 1} + OpCount{2, 1, 1, 0} +
-                            OpCount{3, 3, 0, 0};
-  return ops + (corner + per_light * lights) * n;
+// Linear in corners and corners x lights, so culled_ops can sum it.
+OpCount lighting_ops(size_t n, size_t lights) {
+  return kAreaTestFixed + (kAreaTestPerCorner + kLightCorner) * n + kLightCornerLight * (n * lights);
 }
 
-// [Xs Ys Zs] = (P - C) T: 3 sub, 9 mul, 6 add per corner.
-OpCount view_ops(size_t n) { return OpCount{9, 9, 0, 0} * n; }
+// The centre of the stored sphere into camera space (9 mul, 9 add); the
+// radius scaled by the object's scale (1 mul); the near test (1 add, 1
+// compare); the four sides through the eye, their unit normals set once a
+// frame (2 mul, 1 add, 1 compare each).
+OpCount object_culling_ops() { return OpCount{9, 9, 0, 0} + OpCount{0, 1, 0, 0} + OpCount{2, 0, 0, 0} + OpCount{2, 2, 0, 0} * 4; }
+
+// The polygon's normal is stored with its vertex normals (a zero normal
+// marks no area: 1 compare); centroid (3 add per corner, 1/n: 1 div, 3 mul),
+// the vector to the eye (3 sub), one dot, one compare.
+OpCount back_face_ops(size_t n) { return OpCount{3 * n + 5, 3, 1, 0} + kDot; }
+
+OpCount culled_ops(uint64_t polygons, uint64_t corners, uint64_t corner_lights) {
+  return kAreaTestFixed * polygons + (kAreaTestPerCorner + kLightCorner + kViewCorner + kDepthTestCorner) * corners +
+         kLightCornerLight * corner_lights;
+}
+
+OpCount view_ops(size_t n) { return kViewCorner * n; }
 
 // One compare per corner; per crossing the weights (3 sub, 1 div) and
 // 7 attributes (X, Y, Z, R, G, B, T) at 2 mul + 1 add each.
 OpCount depth_clip_ops(size_t n, size_t made) {
-  return OpCount{n, 0, 0, 0} + (OpCount{3, 0, 1, 0} + OpCount{7, 14, 0, 0}) * made;
+  return kDepthTestCorner * n + (OpCount{3, 0, 1, 0} + OpCount{7, 14, 0, 0}) * made;
 }
 
-// Per corner: Zmin/Zmax (2 compares), repeated-corner test (3 compares),
-// 1/Zs (1 div), Xp and Yp (4 mul), the pixel map (2 add, 2 mul), Zp (1 add,
-// 2 mul); plus the area test the clip's slivers need.
-OpCount projection_ops(size_t n) { return OpCount{7, 8, 1, 0} * n + area_test(n); }
+// Per corner: the screen box (4 compares) and Zmin/Zmax (2 compares),
+// repeated-corner test (3 compares), 1/Zs (1 div), Xp and Yp (4 mul), the
+// pixel map (2 add, 2 mul), Zp (1 add, 2 mul): 12 add, 8 mul, 1 div; per
+// polygon the box against the window (4 compares); plus the area test the
+// clip's slivers need.
+OpCount projection_ops(size_t n) {
+  return OpCount{12, 8, 1, 0} * n + OpCount{4, 0, 0, 0} + kAreaTestFixed + kAreaTestPerCorner * n;
+}
 
 // The polygon's own plane (Newell normal, normalize, two axes: 2 cross
 // products, 1 normalize; per corner 2 dots and 3 sub, 1 compare for the

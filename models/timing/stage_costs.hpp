@@ -23,15 +23,22 @@ struct OpCount {
   uint64_t div = 0;
   uint64_t sqrt = 0;
   double flops() const;  // weighted: div 4, sqrt 8
-  OpCount operator+(const OpCount& o) const { return {add + o.add, mul + o.mul, div + o.div, sqrt + o.sqrt}; }
-  OpCount operator*(uint64_t k) const { return {add * k, mul * k, div * k, sqrt * k}; }
+  constexpr OpCount operator+(const OpCount& o) const { return {add + o.add, mul + o.mul, div + o.div, sqrt + o.sqrt}; }
+  constexpr OpCount operator*(uint64_t k) const { return {add * k, mul * k, div * k, sqrt * k}; }
 };
 
 inline constexpr double kDivFlops = 4, kSqrtFlops = 8;
 
-// A polygon of `corners` corners in world space: the no-area test, the
-// back-face test when culling, the lighting of every corner by `lights` lights.
-OpCount lighting_ops(size_t corners, size_t lights, bool culling);
+// The culling stage, in front of lighting: an object's bounding sphere
+// against the view volume (culling.objects); a polygon's back-face test.
+OpCount object_culling_ops();
+OpCount back_face_ops(size_t corners);
+// A polygon of `corners` corners in world space: the no-area test and the
+// lighting of every corner by `lights` lights.
+OpCount lighting_ops(size_t corners, size_t lights);
+// What polygons culling removed would have cost in lighting, the view
+// transform and the depth clip's test, from their counts (FrontendCounts).
+OpCount culled_ops(uint64_t polygons, uint64_t corners, uint64_t corner_lights);
 // Every corner into camera space.
 OpCount view_ops(size_t corners);
 // The depth test of every corner and `made` crossings at Zs = C.

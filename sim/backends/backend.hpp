@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "backends/prune_plan.hpp"
 #include "backends/run_stats.hpp"
 #include "config/params.hpp"
 #include "had/had.hpp"
@@ -30,6 +31,8 @@ class Backend {
     (void)tap;
     return false;
   }
+  // What the simulator may leave out (backends/prune_plan.hpp), before begin().
+  virtual void prune(const PrunePlan& plan) { (void)plan; }
 };
 
 // "reference" or "golden" (approx and rtl are the pipeline's: sim/pipeline).

@@ -15,6 +15,7 @@
 #include "config/params.hpp"
 #include "dda/dda_engine.hpp"
 #include "dda/dda_params.hpp"
+#include "backends/prune_plan.hpp"
 #include "had/had.hpp"
 #include "io/png_io.hpp"
 
@@ -51,6 +52,8 @@ class BackendEngine {
   virtual BackendResult result() const = 0;
   virtual RgbImage shown() const = 0;
   virtual std::vector<uint16_t> z_plane() const = 0;
+  // What the simulator may leave out (backends/prune_plan.hpp), before the first frame.
+  virtual void prune(const PrunePlan& plan) { (void)plan; }
   // Waveforms (rtl only): the RTL to record, and a call on every tick.
   virtual BackendRtl* rtl() { return nullptr; }
 };

@@ -11,16 +11,17 @@ uint64_t passes = 0;
 uint64_t front_end_passes() { return passes; }
 void count_front_end_pass() { ++passes; }
 
-FrontEndRun run_front_end(const Trace& polygons, const Params& params) {
+FrontEndRun run_front_end(const Trace& polygons, const Params& params, const PrunePlan& prune) {
   count_front_end_pass();
-  FrontEnd fe(ScreenMap{params.screen_width, params.screen_height}, params.depth_max_mapped);
+  FrontEnd fe(ScreenMap{params.screen_width, params.screen_height}, params.depth_max_mapped,
+              front_end_options(params, prune));
   FrontEndRun run;
   run.triangles.path = polygons.path;
   run.triangles.level = TraceLevel::kTriangle;
   for (const TraceFrame& in : polygons.frames) {
     TraceFrame out;
     out.settings = in.settings;
-    for (const FrontTriangle& t : fe.run_frame(in.world, in.settings.window)) out.triangles.push_back(t.tri);
+    for (const FrontTriangle& t : fe.run_frame(in.world, in.settings.window, in.settings.q)) out.triangles.push_back(t.tri);
     run.triangles.frames.push_back(std::move(out));
   }
   run.counts = fe.counts();

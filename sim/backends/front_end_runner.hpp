@@ -9,6 +9,7 @@
 
 #include <cstdint>
 
+#include "backends/prune_plan.hpp"
 #include "config/params.hpp"
 #include "frontend/frontend_counts.hpp"
 #include "io/trace.hpp"
@@ -20,7 +21,7 @@ struct FrontEndRun {
   FrontendCounts counts;  // summed over the frames
 };
 
-FrontEndRun run_front_end(const Trace& polygons, const Params& params);
+FrontEndRun run_front_end(const Trace& polygons, const Params& params, const PrunePlan& prune);
 
 // Runs of the front end over an input in this process: run_front_end and the
 // pipeline's front-end stages each add one.

@@ -19,6 +19,7 @@ RgbImage shown_image(const FrameBuffer& fb) {
 }
 
 RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& params, const RenderOptions& opt) {
+  backend.prune(opt.prune);
   backend.begin(trace);
   // --dump: the input as it came, the front end's triangles as drawn, or the
   // DDA parameter sets as the back end draws them.

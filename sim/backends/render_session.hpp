@@ -8,6 +8,7 @@
 
 #include "backends/backend.hpp"
 #include "backends/dump_tap.hpp"
+#include "backends/prune_plan.hpp"
 #include "common/input_error.hpp"
 #include "wave/wave_options.hpp"
 #include "had/frame_buffer.hpp"
@@ -35,6 +36,7 @@ struct RenderOptions {
   // --dump polygons=FILE; frames correspond one to one.
   const Trace* polygon_source = nullptr;
   std::optional<WaveOptions> wave;  // --wave (the rtl back end)
+  PrunePlan prune;                  // what the simulator may leave out (render --no-prune: nothing)
 };
 
 RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& params, const RenderOptions& opt);

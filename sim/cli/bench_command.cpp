@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
 #include "cli/output_set.hpp"
+#include "cli/leave_out_bench.hpp"
 #include "cli/pipeline_bench.hpp"
 #include "io/workload_list.hpp"
 #include "common/input_error.hpp"
@@ -65,8 +66,8 @@ nlohmann::json measured_on() {
 
 }  // namespace
 
-int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool bless,
-              const std::vector<std::string>& inputs) {
+int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool leave_out_only,
+              bool bless, const std::vector<std::string>& inputs) {
   const Params params = load_params(config);
   if (bless && !config.empty())
     throw InputError("--bless", 0, "the stored expectations are the thesis configuration's: bless without --config");
@@ -79,6 +80,17 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
     std::printf("%d failure(s) (back ends disagreeing, or differing from the stored expectations); wrote %s\n", pb.failures,
                 files.path("pipeline.md").c_str());
     return pb.failures ? 1 : 0;
+  }
+  if (leave_out_only) {
+    const LeaveOutBench lb = run_leave_out_bench(config, out_dir);
+    OutputSet files(out_dir);
+    files.add_text("leave_out.json", nlohmann::json{{"measured_on", measured_on()}, {"culling", lb.culling},
+                                                    {"pruning", lb.pruning}, {"config", params.source}}
+                                             .dump(2) + "\n");
+    files.add_text("leave_out.md", "# girtd bench --leave-out\n" + lb.markdown);
+    files.commit();
+    std::printf("%d failure(s); wrote %s\n", lb.failures, files.path("leave_out.md").c_str());
+    return lb.failures ? 1 : 0;
   }
   nlohmann::json rows = nlohmann::json::array();
   std::string md =
@@ -141,12 +153,16 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
   md += pb.markdown;
   const WaveCostBench wb = run_wave_cost_bench(params, config, out_dir);
   md += wb.markdown;
+  const LeaveOutBench lb = run_leave_out_bench(config, out_dir);
+  md += lb.markdown;
   OutputSet files(out_dir);
   files.add_text("bench.json", nlohmann::json{{"measured_on", measured_on()},
                                               {"rows", rows},
                                               {"timing", timing_rows},
                                               {"pipeline", pb.rows},
                                               {"wave_cost", wb.rows},
+                                              {"culling", lb.culling},
+                                              {"pruning", lb.pruning},
                                               {"config", params.source}}
                                        .dump(2) +
                                    "\n");
@@ -154,7 +170,8 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
   files.commit();
   std::printf("wrote %s and %s\n", files.path("bench.json").c_str(), files.path("bench.md").c_str());
   if (pb.failures) std::printf("%d failure(s) in the pipeline table (see above)\n", pb.failures);
-  return pb.failures ? 1 : 0;
+  if (lb.failures) std::printf("%d failure(s) in the culling and pruning tables (see above)\n", lb.failures);
+  return pb.failures || lb.failures ? 1 : 0;
 }
 
 }  // namespace girtd

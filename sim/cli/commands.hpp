@@ -24,13 +24,14 @@ struct RenderArgs {
   ConfigFiles config;
   bool z_png = false;
   bool quiet = false;
+  bool no_prune = false;
 };
 
 int run_render(const RenderArgs& a);
 int run_claims(const ConfigFiles& config);
 // bless: rewrite the stored expectations from this run (cli/expectations.hpp).
 // inputs: the pipeline table's (default: the sample workloads).
-int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool bless,
+int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool leave_out_only, bool bless,
               const std::vector<std::string>& inputs);
 struct RegressArgs {
   std::vector<std::string> traces;  // empty: every trace under traces/

@@ -44,6 +44,9 @@ int main(int argc, char** argv) {
   render->add_option("--config", ra.config, kConfigHelp)->allow_extra_args(false);
   render->add_flag("--z-png", ra.z_png, "also write z.png (16-bit depth)");
   render->add_flag("--quiet", ra.quiet, "print nothing on success");
+  render->add_flag("--no-prune", ra.no_prune,
+                   "compute every unit, skipping nothing the output does not need (same outputs, slower; "
+                   "report.json left_out lists what a pruned run skips)");
 
   ConfigFiles claims_config;
   CLI::App* claims = app.add_subcommand("claims", "the thesis' claims (GIRTD.md §9) against measurements");
@@ -63,6 +66,10 @@ int main(int argc, char** argv) {
       bench->add_option("inputs", bench_inputs, "with --pipeline: these inputs only (default: traces/workloads.txt)")
           ->check(CLI::ExistingFile)
           ->needs(pipeline_only);
+  bool bench_leave_out = false;
+  bench->add_flag("--leave-out", bench_leave_out,
+                  "only the culling (modeled) and pruning (wall time, median of 5) tables")
+      ->excludes(pipeline_only);
   bool bench_bless = false;
   bench->add_flag("--bless", bench_bless, "with --pipeline: rewrite testbench/golden/expectations.json from this run")
       ->needs(pipeline_only)
@@ -115,7 +122,7 @@ int main(int argc, char** argv) {
     if (drives_rtl) run_in_rtl_variant_if_needed(load_params(config), argv);
     if (*render) return run_render(ra);
     if (*claims) return run_claims(claims_config);
-    if (*bench) return run_bench(bench_config, bench_out, bench_pipeline, bench_bless, bench_inputs);
+    if (*bench) return run_bench(bench_config, bench_out, bench_pipeline, bench_leave_out, bench_bless, bench_inputs);
     if (*regress) return run_regress(rg);
     if (*stress) return run_stress(st);
   } catch (const InputError& e) {

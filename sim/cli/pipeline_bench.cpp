@@ -14,6 +14,7 @@
 #include "io/subprocess.hpp"
 #include "io/trace_reader.hpp"
 #include "io/workload_list.hpp"
+#include "cli/child_render.hpp"
 #include "cli/expectations.hpp"
 #include "rtl/timing_comparison.hpp"
 
@@ -21,17 +22,6 @@ namespace girtd {
 namespace fs = std::filesystem;
 
 namespace {
-
-// One `girtd render` in a child process; its report, or null when it failed.
-nlohmann::json render_in_child(const std::string& input, const std::string& backend, const std::string& dir,
-                               const ConfigFiles& config, const std::vector<std::string>& extra = {}) {
-  std::vector<std::string> args = {self_executable(), "render", input, "--backend", backend, "--out", dir, "--quiet"};
-  args.insert(args.end(), extra.begin(), extra.end());
-  for (const std::string& a : config_args(config)) args.push_back(a);
-  if (run_process(args, false) != 0) return nullptr;
-  std::ifstream in(dir + "/report.json");
-  return nlohmann::json::parse(in);
-}
 
 bool same_counts(const nlohmann::json& a, const nlohmann::json& b) {
   for (const char* k : {"triangles_in", "triangles_drawn", "pixels_generated", "pixels_written", "pixels_blended",

@@ -45,6 +45,7 @@ struct LoadedInput {
   Trace trace;
   std::optional<Trace> polygons;
   std::optional<FrontendCounts> frontend;
+  PrunePlan prune;  // decided on the input as read
 };
 
 // `untimed`: golden and reference draw triangles, so the front end runs here;
@@ -74,8 +75,9 @@ LoadedInput load_input(const RenderArgs& a, const Params& params, bool untimed) 
       for (DdaParams& d : f.dda) d.q = *a.aa;
     }
   }
+  in.prune = plan_pruning(in.polygons ? *in.polygons : in.trace, a.backend, !a.no_prune);
   if (in.polygons && untimed) {
-    FrontEndRun run = run_front_end(*in.polygons, params);
+    FrontEndRun run = run_front_end(*in.polygons, params, in.prune);
     in.trace = std::move(run.triangles);
     in.frontend = run.counts;
   }
@@ -146,6 +148,7 @@ int run_render(const RenderArgs& a) {
   opt.progress = isatty(STDERR_FILENO);
   if (input.polygons) opt.polygon_source = &*input.polygons;
   opt.wave = wave;
+  opt.prune = input.prune;
   RenderOutput out;
   if (pipelined) {
     out = run_pipeline(a.backend, input.polygons ? *input.polygons : trace, params, opt);
@@ -164,13 +167,15 @@ int run_render(const RenderArgs& a) {
   ctx.level = level_name(input.polygons ? TraceLevel::kPolygon : trace.level);
   ctx.image_sha256 = sha256_hex(out.shown.rgb);
   ctx.warnings = warnings;
-  for (const auto& w : {limit_warning(a.input, out.stats, params), seam_warning(a.input, out.stats)})
+  for (const auto& w : {limit_warning(a.input, out.stats, params), seam_warning(a.input, out.stats),
+                        culling_warning(a.input, out.stats)})
     if (w) {  // a hardware limit hit or a seam: counted and warned
       std::fprintf(stderr, "warning: %s\n", w->c_str());
       ctx.warnings.push_back(*w);
     }
   if (ctx.backend == "rtl") ctx.rtl_build = built_rtl_key();
   ctx.front_end_passes = front_end_passes();
+  ctx.left_out = input.prune.left_out;
   const nlohmann::json report = make_report(ctx, out.stats, params);
 
   OutputSet files(dir);

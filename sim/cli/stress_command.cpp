@@ -83,7 +83,7 @@ CaseResult run_case(const StressCase& c, const std::string& dir, const ConfigFil
   }
   // The triangles as drawn: a scene's from the front end, here in-process
   // (its dump may hold corners past the trace format's 1e6 px).
-  const Trace drawn = c.scene ? run_front_end(read_scene(input, params), params).triangles
+  const Trace drawn = c.scene ? run_front_end(read_scene(input, params), params, PrunePlan{}).triangles
                               : read_trace(input, std::nullopt, params);
   r.j = judge_stress_case(drawn, params, read_json(dir + "/reference/report.json"), golden,
                           read_json(dir + "/rtl/report.json"), read_png_rgb(dir + "/reference/frame.png"),

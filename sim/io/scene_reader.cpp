@@ -70,6 +70,7 @@ void place(const std::vector<Instance>& instances, WorldFrame& w) {
     std::vector<Vec3> moved;
     moved.reserve(in.mesh->positions.size());
     for (const Vec3& p : in.mesh->positions) moved.push_back(in.transform.apply(p));
+    w.objects.push_back({w.polygons.size(), in.mesh->polygons.size()});
     for (size_t i = 0; i < in.mesh->polygons.size(); ++i) {
       WorldPolygon poly;
       poly.surface = base + in.groups.group[i];

@@ -144,6 +144,7 @@ class TraceBuilder {
     if (k == "dda") return dda(p);
     if (k == "surface" || k == "lights" || k == "camera" || k == "focal" || k == "cull") return world_setting(p);
     if (k == "poly") return polygon(p);
+    if (k == "object") return object(p);
     if (level_ == TraceLevel::kThesis) return thesis_record(p);
     p.fail("unknown record '" + k + "'");
   }
@@ -166,6 +167,7 @@ class TraceBuilder {
     FrameSettings carried = current().settings;
     WorldFrame carried_world = current().world;
     carried_world.polygons.clear();
+    carried_world.objects.clear();
     trace_.frames.emplace_back();
     current().settings = carried;
     current().world = std::move(carried_world);
@@ -339,6 +341,16 @@ class TraceBuilder {
       poly.p.push_back({p.real_in(3 + 3 * i, "X", -1e12, 1e12), p.real_in(4 + 3 * i, "Y", -1e12, 1e12),
                         p.real_in(5 + 3 * i, "Z", -1e12, 1e12)});
     w.polygons.push_back(std::move(poly));
+    if (w.objects.empty()) w.objects.push_back({0, 0});  // polygons before any `object` record
+    ++w.objects.back().count;
+  }
+
+  // The polygons that follow, up to the next `object`, are one object.
+  void object(const LineParser& p) {
+    require_level(p, TraceLevel::kPolygon);
+    p.expect_count(0, "fields");
+    WorldFrame& w = current().world;
+    if (w.objects.empty() || w.objects.back().count > 0) w.objects.push_back({w.polygons.size(), 0});
   }
 
   static constexpr int64_t kMaxTraceLights = 64;

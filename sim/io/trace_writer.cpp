@@ -92,7 +92,13 @@ void TraceWriter::write(const WorldFrame& w) {
   for (const Vec3& v : {c.centre, c.right, c.up, c.forward}) out_ << "  " << v.x << " " << v.y << " " << v.z;
   out_ << "  " << c.d_over_s << "\n";
   out_ << "focal " << w.focal_distance << "\ncull " << (w.cull_back_faces ? 1 : 0) << "\n";
-  for (const WorldPolygon& poly : w.polygons) {
+  const std::vector<WorldObject> objects = frame_objects(w);
+  size_t next_object = 0;
+  for (size_t i = 0; i < w.polygons.size(); ++i) {
+    const WorldPolygon& poly = w.polygons[i];
+    bool starts = false;  // an object starts here (skip empty ones)
+    while (next_object < objects.size() && objects[next_object].first == i) starts = objects[next_object++].count > 0;
+    if (starts && objects.size() > 1) out_ << "object\n";
     out_ << "poly " << poly.surface << " " << poly.p.size();
     for (const Vec3& v : poly.p) out_ << "  " << v.x << " " << v.y << " " << v.z;
     out_ << "\n";

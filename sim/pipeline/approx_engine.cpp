@@ -16,6 +16,7 @@ class ApproxEngine : public BackendEngine {
   explicit ApproxEngine(const Params& p)
       : period_ticks_(static_cast<uint64_t>(p.ticks(p.dda_clock_ns))), dda_(p), fb_(p.screen_width, p.screen_height, static_cast<uint16_t>(p.depth_clear)), had_(fb_, p.one_minus_nf),
         timing_(p) {}
+  void prune(const PrunePlan& plan) override { dda_.skip_unreachable_wraps(plan.unreachable_wraps); }
   uint64_t ready_tick() override { return timing_.dda_ready_tick(); }
   void idle_until(uint64_t tick) override { timing_.idle_until(tick); }
   void begin_frame(const FrameSettings& s) override {

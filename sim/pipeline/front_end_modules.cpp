@@ -12,19 +12,35 @@ namespace girtd {
 void PipelineElaboration::build_from_polygons(const Trace& polygons) {
   count_front_end_pass();
   polygon_source_ = &polygons;
-  for (const TraceFrame& f : polygons.frames) {
-    polygon_ids_.emplace_back();
-    for (size_t i = 0; i < f.world.polygons.size(); ++i) polygon_ids_.back().push_back(i);
-  }
-  auto& src = source<size_t>(polygon_ids_);
+  for (const TraceFrame& f : polygons.frames) objects_.push_back(frame_objects(f.world));
+  auto& src = source<WorldObject>(objects_);
+
+  // Culling, in front of lighting: an object's bounding sphere (when
+  // culling.objects is on), then each polygon's back-face test (when the
+  // frame or culling.back_faces asks for it).
+  FrontEndStages& cull = front_end_instance();
+  auto& cull_out = stage<WorldObject, size_t>(
+      "culling", src,
+      [&cull](size_t, const WorldObject& o, Work<size_t>& w) {
+        w.push_back({cull.options().cull_objects ? object_culling_ops().flops() : 0, std::nullopt});
+        if (!cull.keep_object(o)) return;
+        const WorldFrame& f = cull.frame();
+        for (size_t i = o.first; i < o.first + o.count; ++i) {
+          const double test = cull.back_face_test_on() ? back_face_ops(f.polygons[i].p.size()).flops() : 0;
+          std::optional<size_t> kept;
+          if (cull.keep_polygon(i)) kept = i;
+          w.push_back({test, kept});
+        }
+      },
+      [this, &cull](size_t frame, Work<size_t>&) { begin(cull, frame); });
 
   FrontEndStages& lit = front_end_instance();
   auto& lit_out = stage<size_t, FrontPolygon>(
-      "lighting", src,
+      "lighting", cull_out,
       [&lit](size_t, const size_t& i, Work<FrontPolygon>& w) {
         const WorldFrame& f = lit.frame();
         const size_t corners = f.polygons[i].p.size();
-        w.push_back({lighting_ops(corners, f.lights.directional.size(), f.cull_back_faces).flops(), lit.light(i)});
+        w.push_back({lighting_ops(corners, f.lights.directional.size()).flops(), lit.light(i)});
       },
       [this, &lit](size_t frame, Work<FrontPolygon>&) { begin(lit, frame); });
 
@@ -109,7 +125,7 @@ void PipelineElaboration::build_from_polygons(const Trace& polygons) {
 }
 
 void PipelineElaboration::begin(FrontEndStages& s, size_t frame) {
-  s.begin_frame(polygon_source_->frames[frame].world, settings_[frame].window);
+  s.begin_frame(polygon_source_->frames[frame].world, settings_[frame].window, settings_[frame].q);
 }
 
 void PipelineElaboration::build_from_triangles(const Trace& trace) {

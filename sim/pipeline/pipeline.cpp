@@ -41,6 +41,7 @@ void check_pipeline_input(const Trace& trace) {
 PipelineElaboration::PipelineElaboration(const std::string& backend, const Trace& input, const Params& p,
                                          const RenderOptions& opt, DumpTap* tap)
     : p_(p), opt_(opt), engine_(make_backend_engine(backend, p, opt.wave.has_value())), backend_(backend) {
+  engine_->prune(opt.prune);
   for (const TraceFrame& f : input.frames) settings_.push_back(f.settings);
   // The stream that entered is dumped as it is; one made inside, by the
   // preparer stage as it crosses (front_end_modules.cpp).

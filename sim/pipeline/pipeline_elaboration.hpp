@@ -90,7 +90,8 @@ class PipelineElaboration {
   // Per-stage copies of the front end's stage functions: stages run apart
   // work on different frames at once. Their counts add up.
   FrontEndStages& front_end_instance() {
-    fe_.push_back(std::make_unique<FrontEndStages>(ScreenMap{p_.screen_width, p_.screen_height}, p_.depth_max_mapped));
+    fe_.push_back(std::make_unique<FrontEndStages>(ScreenMap{p_.screen_width, p_.screen_height}, p_.depth_max_mapped,
+                                                   front_end_options(p_, opt_.prune)));
     return *fe_.back();
   }
 
@@ -115,7 +116,7 @@ class PipelineElaboration {
   std::string backend_;
   std::vector<FrameSettings> settings_;
   const Trace* polygon_source_ = nullptr;
-  std::vector<std::vector<size_t>> polygon_ids_;
+  std::vector<std::vector<WorldObject>> objects_;
   std::vector<std::vector<Triangle>> triangles_;
   std::vector<std::vector<DdaParams>> dda_sets_;
   std::vector<std::unique_ptr<FrontEndStages>> fe_;

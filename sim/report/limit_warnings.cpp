@@ -58,4 +58,14 @@ std::optional<std::string> seam_warning(const std::string& input, const RunStats
          "preparer.edge_flags true (config/presets/robust.json) avoids it";
 }
 
+std::optional<std::string> culling_warning(const std::string& input, const RunStats& s) {
+  if (!s.frontend || s.frontend->back_faces_exempt == 0) return std::nullopt;
+  std::string ids;
+  for (int id : s.frontend->exempt_surfaces) ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+  return input + ": " + std::to_string(s.frontend->back_faces_exempt) +
+         " back faces of transparent surfaces (" + ids +
+         ") were not culled: culling.back_faces \"always\" exempts them, since they show through the front faces "
+         "(set the input's own cull_back_faces / cull to cull them anyway)";
+}
+
 }  // namespace girtd

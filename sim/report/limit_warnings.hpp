@@ -15,5 +15,7 @@ namespace girtd {
 std::optional<std::string> limit_warning(const std::string& input, const RunStats& s, const Params& p);
 // "INPUT: N pixels blended twice by one surface ...", or nothing without seams.
 std::optional<std::string> seam_warning(const std::string& input, const RunStats& s);
+// Back faces of transparent surfaces a forced cull kept (culling.back_faces "always").
+std::optional<std::string> culling_warning(const std::string& input, const RunStats& s);
 
 }  // namespace girtd

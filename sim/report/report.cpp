@@ -127,6 +127,10 @@ std::string report_markdown(const json& r) {
   }
   o << "\nWarnings: " << (r.at("warnings").empty() ? "none" : "") << "\n";
   for (const auto& w : r.at("warnings")) o << "\n- " << w.get<std::string>() << "\n";
+  o << "\nLeft out by the simulator (nothing the outputs depend on; `--no-prune` turns it off): " << (r.at("left_out").empty() ? "nothing" : "")
+    << "\n";
+  for (const auto& l : r.at("left_out"))
+    o << "\n- " << l.at("unit").get<std::string>() << ": " << l.at("reason").get<std::string>() << "\n";
   o << "\nNot modeled by this back end: " << (r.at("not_modeled").empty() ? "nothing" : "");
   for (const auto& k : r.at("not_modeled")) o << "`" << k.get<std::string>() << "` ";
   o << "\n";

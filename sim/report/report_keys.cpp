@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "dda/dda_engine.hpp"
+#include "timing/stage_costs.hpp"
 
 namespace girtd {
 
@@ -218,11 +219,27 @@ std::vector<ReportKey> make_keys() {
           "below the front end (a `triangle` or `dda` trace)",
           kEvery, [](auto& r) { return r.s.frontend ? json::object() : json(); }),
       frontend_key("polygons", "polygons in", &FrontendCounts::polygons),
-      frontend_key("culled", "back faces culled", &FrontendCounts::culled),
+      frontend_key("objects", "objects in (a scene's models; a polygon trace's `object` groups)", &FrontendCounts::objects),
+      frontend_key("objects_culled", "objects whose bounding sphere misses the view volume (`culling.objects`)",
+                   &FrontendCounts::objects_culled),
+      frontend_key("object_culled_polygons", "their polygons, removed before lighting", &FrontendCounts::object_culled_polygons),
+      frontend_key("culled", "back faces culled (the input's cull flag, or `culling.back_faces` always)",
+                   &FrontendCounts::culled),
+      frontend_key("back_faces_exempt",
+                   "back faces of transparent surfaces `culling.back_faces` always kept (warned)",
+                   &FrontendCounts::back_faces_exempt),
+      key("frontend.culling_flops_saved", "flop",
+          "what the polygons culling removed would have cost in lighting, view and the depth clip's test "
+          "(`models/timing/stage_costs.hpp` culled_ops); the culling stage's own flops are `stages.culling.flops`",
+          kEvery, [](auto& r) {
+            const FrontendCounts& f = *r.s.frontend;
+            return json(culled_ops(f.object_culled_polygons, f.object_culled_corners, f.object_culled_corner_lights).flops() +
+                        culled_ops(f.culled, f.culled_corners, f.culled_corner_lights).flops());
+          }),
       frontend_key("clipped", "polygons cut at Zs = C", &FrontendCounts::clipped),
       frontend_key("clipped_away", "polygons wholly at Zs <= C", &FrontendCounts::clipped_away),
       frontend_key("degenerate_polygons",
-                   "no area: < 3 distinct corners or 2 x area <= 1e-12 perimeter^2, at input before culling or "
+                   "no area: < 3 distinct corners or 2 x area <= 1e-12 perimeter^2, at input (of the objects culling kept; never back-face culled) or "
                    "after the depth clip",
                    &FrontendCounts::degenerate_polygons),
       frontend_key("non_planar", "polygons not in one plane", &FrontendCounts::non_planar),
@@ -251,6 +268,15 @@ std::vector<ReportKey> make_keys() {
           "input the run went on from, each `FILE: what` and also printed on stderr as `warning: FILE: what` (a "
           "model's missing `.mtl`, an unknown material: `io/README.md`); empty when there were none",
           kEvery, [](auto& r) { return json(r.ctx.warnings); }),
+      key("left_out", "list",
+          "what the simulator skipped computing for this input, `{\"unit\", \"reason\"}` each "
+          "(`sim/backends/prune_plan.hpp`): nothing the outputs depend on; `render --no-prune` skips nothing "
+          "that can be computed",
+          kEvery, [](auto& r) {
+            json out = json::array();
+            for (const LeftOut& l : r.ctx.left_out) out.push_back({{"unit", l.unit}, {"reason", l.reason}});
+            return out;
+          }),
       key("config", "JSON", "the configuration used (`config/girtd.json` plus every `--config`)", kEvery,
           [](auto& r) { return r.params.source; }),
       key("rtl_build", "text",

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "backends/prune_plan.hpp"
 #include "backends/run_stats.hpp"
 #include "config/params.hpp"
 
@@ -25,6 +26,7 @@ struct ReportContext {
   std::vector<std::string> warnings;  // input the run went on from ("FILE: what")
   std::string rtl_build;              // the rtl back end's RTL build key; "" for the others
   uint64_t front_end_passes = 0;      // runs of the front end over the input (backends/front_end_runner.hpp)
+  std::vector<LeftOut> left_out;      // what the simulator skipped (backends/prune_plan.hpp)
 };
 
 struct ReportSource {

@@ -41,7 +41,7 @@ for k in modeled_time_s modeled_mpixels_per_s back_end_mpixels_per_s bottleneck 
 done
 jq -e '.not_modeled == []' "$r" >/dev/null && ok || bad "approx leaves keys unmodeled"
 check_registry "$r"
-jq -e '.stage_order == ["lighting","view","depth_clip","projection","triangulator","window_clip","depth_sort","preparer","dda","had"]' \
+jq -e '.stage_order == ["culling","lighting","view","depth_clip","projection","triangulator","window_clip","depth_sort","preparer","dda","had"]' \
   "$r" >/dev/null && ok || bad "stage order: $(jq -c .stage_order "$r")"
 jq -e '(.modeled_mpixels_per_s - .pixels_generated / .modeled_time_s / 1e6 | fabs) < 1e-6' "$r" >/dev/null \
   && ok || bad "modeled rate is not pixels over modeled time"

@@ -149,7 +149,7 @@ TEST_CASE("the timed front end, stages working on different frames at once, give
   const Params p = Params::defaults();
   const Trace polygons = read_scene("traces/scenes/animation.json", p);
   REQUIRE(polygons.frames.size() > 1);
-  const FrontEndRun fe = run_front_end(polygons, p);
+  const FrontEndRun fe = run_front_end(polygons, p, PrunePlan{});
   GoldenBackend golden(p);
   RenderOptions keep;
   keep.keep_all_frames = true;

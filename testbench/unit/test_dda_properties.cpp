@@ -9,9 +9,11 @@
 #include <map>
 #include <random>
 #include <set>
+#include <vector>
 
 #include "common/fixed_point.hpp"
 #include "common/triangle_setup.hpp"
+#include "dda/dda_datapath.hpp"
 #include "dda/dda_engine.hpp"
 #include "dda/dda_preparer.hpp"
 #include "dda/nf_unit.hpp"
@@ -155,6 +157,59 @@ TEST_CASE("DDA error bound is tight: one fraction bit fewer breaks it", "[dda][p
     });
   }
   CHECK(worst > 1.0);
+}
+
+
+TEST_CASE("may_wrap: the register's extremes over the visited lattice, worked by hand", "[dda][prune]") {
+  const Params p = Params::defaults();  // colour EPs 11.9: 20 bits, raw 2^19 - 1 at most
+  DdaParams d;
+  d.x0 = 0, d.y0 = 0, d.xmin = 0, d.xmax = 9, d.ymax = 0;
+  d.ep[kEpR] = {(int64_t{1} << 19) - 100, 10, 0};
+  // X from 0 to 9: R reaches 2^19 - 100 + 90 = 2^19 - 10, and at the row
+  // past Ymax (Y = 1, dY = 0) the same: it fits.
+  CHECK_FALSE(may_wrap(p, d));
+  d.xmax = 10;  // 2^19 - 100 + 100 = 2^19: one past the format
+  CHECK(may_wrap(p, d));
+  d.xmax = 9;
+  d.ep[kEpR].dy = 50;  // the row past Ymax: 2^19 - 10 + 50
+  CHECK(may_wrap(p, d));
+  d.ep[kEpR].dy = -50;  // going down, far from the bottom: -2^19 is far
+  CHECK_FALSE(may_wrap(p, d));
+}
+
+TEST_CASE("skipping the wrap detector where nothing can wrap changes no count", "[dda][prune]") {
+  // Triangles up to 6,000 px across, so the D EPs (12 integer bits) wrap in
+  // some: their numerics must be the same with the skip as without.
+  const Params p = Params::defaults();
+  std::mt19937 rng(20261202);
+  int safe = 0, unsafe = 0, wrapped = 0;
+  for (int n = 0; n < 400; ++n) {
+    FrameSettings f;
+    f.q = n % 2;
+    const Triangle t = random_triangle(rng, n % 4 == 0 ? 6000 : 300);
+    DdaPreparer prep(p);
+    DdaParams d;
+    if (prep.prepare(t, f, d) != PrepareResult::kReady) continue;
+    (may_wrap(p, d) ? unsafe : safe) += 1;
+    DdaEngine full(p), pruned(p);
+    pruned.skip_unreachable_wraps(true);
+    std::vector<Pixel> a, b;
+    const DdaRunStats sa = full.run(d, [&](const DdaEmit& e) { a.push_back(e.pixel); });
+    const DdaRunStats sb = pruned.run(d, [&](const DdaEmit& e) { b.push_back(e.pixel); });
+    INFO("triangle " << n);
+    REQUIRE(sa.cycles == sb.cycles);
+    REQUIRE(sa.emitted == sb.emitted);
+    for (int i = 0; i < kEpCount; ++i) {
+      REQUIRE(sa.numerics.ep[i].wraps == sb.numerics.ep[i].wraps);
+      REQUIRE(sa.numerics.ep[i].saturations == sb.numerics.ep[i].saturations);
+    }
+    REQUIRE(a.size() == b.size());
+    for (size_t k = 0; k < a.size(); ++k) REQUIRE((a[k].x == b[k].x && a[k].y == b[k].y && a[k].nf == b[k].nf));
+    wrapped += sa.numerics.wraps() > 0;
+  }
+  CHECK(safe > 200);   // the skip is taken
+  CHECK(unsafe > 20);  // and refused where a wrap is possible,
+  CHECK(wrapped > 5);  // some of which do wrap
 }
 
 }  // namespace girtd

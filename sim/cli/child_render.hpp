@@ -1,0 +1,17 @@
+// One `girtd render` in a child process (SystemC elaborates once per
+// process), for the benches: its report.json, or null when it failed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/config_loader.hpp"
+
+namespace girtd {
+
+nlohmann::json render_in_child(const std::string& input, const std::string& backend, const std::string& dir,
+                               const ConfigFiles& config, const std::vector<std::string>& extra = {});
+
+}  // namespace girtd

@@ -1,0 +1,141 @@
+#include "cli/leave_out_bench.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "cli/child_render.hpp"
+#include "io/png_io.hpp"
+#include "io/workload_list.hpp"
+
+namespace girtd {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kPruneRuns = 5;
+constexpr const char* kCullingPreset = "config/presets/culling.json";
+
+uint64_t differing_pixels(const std::string& a, const std::string& b) {
+  const RgbImage x = read_png_rgb(a), y = read_png_rgb(b);
+  uint64_t n = 0;
+  for (size_t i = 0; i + 2 < x.rgb.size() && i + 2 < y.rgb.size(); i += 3)
+    n += x.rgb[i] != y.rgb[i] || x.rgb[i + 1] != y.rgb[i + 1] || x.rgb[i + 2] != y.rgb[i + 2];
+  return n;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// Everything in a report but what pruning may change.
+nlohmann::json without_wall(nlohmann::json r) {
+  r.erase("wall_s");
+  r.erase("left_out");
+  return r;
+}
+
+void culling_table(const ConfigFiles& config, const std::string& dir, LeaveOutBench& b) {
+  const std::string objects_only = dir + "/objects_only.json";
+  std::ofstream(objects_only) << R"({"culling": {"objects": true}})" << "\n";
+  b.markdown +=
+      "\n## Culling in front of lighting (approx, modeled)\n\n"
+      "`culling.objects` alone, then `config/presets/culling.json` (objects and back faces); the frame with "
+      "object culling against the thesis' design's, and how many pixels culling back faces changed.\n\n"
+      "| scene | polygons | objects culled (polygons) | back faces culled | thesis ms | Mpixel/s | objects ms | "
+      "Mpixel/s | frame | both ms | Mpixel/s | pixels changed |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const std::string& input : sample_workloads()) {
+    if (fs::path(input).extension() != ".json") continue;
+    const std::string base = dir + "/culling/" + fs::path(input).stem().string();
+    ConfigFiles with_objects = config, with_both = config;
+    with_objects.push_back(objects_only);
+    with_both.push_back(kCullingPreset);
+    const nlohmann::json t = render_in_child(input, "approx", base + "-thesis", config);
+    const nlohmann::json o = render_in_child(input, "approx", base + "-objects", with_objects);
+    const nlohmann::json a = render_in_child(input, "approx", base + "-both", with_both);
+    if (t.is_null() || o.is_null() || a.is_null()) {
+      ++b.failures;
+      b.markdown += "| " + input + " | render failed |\n";
+      continue;
+    }
+    const bool same = t.at("image_sha256") == o.at("image_sha256");
+    b.failures += !same;  // object culling must leave the frame as it was
+    const uint64_t changed = differing_pixels(base + "-thesis/frame.png", base + "-both/frame.png");
+    auto ms = [](const nlohmann::json& r) { return r.at("modeled_time_s").get<double>() * 1e3; };
+    auto rate = [](const nlohmann::json& r) { return r.at("modeled_mpixels_per_s").get<double>(); };
+    const nlohmann::json& of = o.at("frontend");
+    b.culling.push_back({{"input", input}, {"polygons", of.at("polygons")}, {"objects", of.at("objects")},
+                         {"objects_culled", of.at("objects_culled")},
+                         {"object_culled_polygons", of.at("object_culled_polygons")},
+                         {"back_faces_culled", a.at("frontend").at("culled")},
+                         {"thesis_modeled_s", t.at("modeled_time_s")}, {"objects_modeled_s", o.at("modeled_time_s")},
+                         {"both_modeled_s", a.at("modeled_time_s")}, {"thesis_mpixels_per_s", rate(t)},
+                         {"objects_mpixels_per_s", rate(o)}, {"both_mpixels_per_s", rate(a)},
+                         {"objects_same_frame", same}, {"both_pixels_changed", changed}});
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "| %s | %llu | %llu of %llu (%llu) | %llu | %.2f | %.2f | %.2f | %.2f | %s | %.2f | %.2f | %llu |\n",
+                  fs::path(input).filename().c_str(), of.at("polygons").get<unsigned long long>(),
+                  of.at("objects_culled").get<unsigned long long>(), of.at("objects").get<unsigned long long>(),
+                  of.at("object_culled_polygons").get<unsigned long long>(),
+                  a.at("frontend").at("culled").get<unsigned long long>(), ms(t), rate(t), ms(o), rate(o),
+                  same ? "same" : "DIFFERS", ms(a), rate(a), static_cast<unsigned long long>(changed));
+    b.markdown += line;
+    std::fputs(line, stdout);
+    std::fflush(stdout);
+  }
+}
+
+void pruning_table(const ConfigFiles& config, const std::string& dir, LeaveOutBench& b) {
+  b.markdown +=
+      "\n## Simulator pruning (approx, wall time)\n\n"
+      "Median of five renders each, alternating, each in its own process; `--no-prune` computes everything. "
+      "Outputs must be equal but for `wall_s` and `left_out`.\n\n"
+      "| input | pruned wall s | --no-prune wall s | speed-up | same outputs | left out |\n|---|---|---|---|---|---|\n";
+  for (const std::string& input : sample_workloads()) {
+    const std::string base = dir + "/pruning/" + fs::path(input).filename().string();
+    std::vector<double> pruned, full;
+    nlohmann::json p, f;
+    for (int i = 0; i < kPruneRuns; ++i) {
+      p = render_in_child(input, "approx", base + "-pruned", config);
+      f = render_in_child(input, "approx", base + "-all", config, {"--no-prune"});
+      if (p.is_null() || f.is_null()) break;
+      pruned.push_back(p.at("wall_s"));
+      full.push_back(f.at("wall_s"));
+    }
+    if (p.is_null() || f.is_null()) {
+      ++b.failures;
+      b.markdown += "| " + input + " | render failed |\n";
+      continue;
+    }
+    const bool same = without_wall(p) == without_wall(f);
+    b.failures += !same;
+    std::string units;
+    for (const nlohmann::json& l : p.at("left_out")) units += (units.empty() ? "" : ", ") + l.at("unit").get<std::string>();
+    const double mp = median(pruned), mf = median(full);
+    b.pruning.push_back({{"input", input}, {"pruned_wall_s", mp}, {"no_prune_wall_s", mf},
+                         {"speedup", mp > 0 ? mf / mp : 0}, {"same_outputs", same}, {"left_out", p.at("left_out")}});
+    char line[512];
+    std::snprintf(line, sizeof line, "| %s | %.3f | %.3f | %.2fx | %s | %s |\n", fs::path(input).filename().c_str(),
+                  mp, mf, mp > 0 ? mf / mp : 0, same ? "yes" : "NO", units.empty() ? "—" : units.c_str());
+    b.markdown += line;
+    std::fputs(line, stdout);
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace
+
+LeaveOutBench run_leave_out_bench(const ConfigFiles& config, const std::string& out_dir) {
+  LeaveOutBench b;
+  const std::string dir = out_dir + "/leave_out";
+  fs::create_directories(dir);
+  culling_table(config, dir, b);
+  pruning_table(config, dir, b);
+  return b;
+}
+
+}  // namespace girtd
