@@ -96,15 +96,16 @@ def culling(b):
 def pruning(b):
     rows = b["pruning"]
     same = sum(1 for r in rows if r["same_outputs"])
-    poly = [r for r in rows if r["left_out"] and r["left_out"][0]["unit"] == "lighting"]
+    polygon_level = (".json", ".poly", ".obj", ".off", ".ply", ".stl")  # inputs the front end runs on
+    poly = [r for r in rows if r["input"].endswith(polygon_level)]
     oov = next((r for r in rows if r["input"].endswith("out_of_view.json")), None)
     out = [source(b), "",
            f"- Outputs equal but for `wall_s` and `left_out` on {same} of {len(rows)} inputs.",
            f"- Wall-time ratio `--no-prune` / pruned on approx (median of 5 each): "
            f"{span([r['speedup'] for r in poly], '{:.2f}x')} on the {len(poly)} polygon-level inputs (median "
            f"{sorted(r['speedup'] for r in poly)[len(poly) // 2]:.2f}x), "
-           f"{span([r['speedup'] for r in rows if r not in poly], '{:.2f}x')} on the others (the wrap detector "
-           f"only)"
+           f"{span([r['speedup'] for r in rows if r not in poly], '{:.2f}x')} on the triangle and DDA "
+           f"traces (the wrap detector only)"
            + (f"; `out_of_view.json` {oov['speedup']:.2f}x ({oov['no_prune_wall_s']:.3f} s against "
               f"{oov['pruned_wall_s']:.3f} s)." if oov else ".")]
     return "\n".join(out) + "\n"

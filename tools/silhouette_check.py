@@ -3,7 +3,8 @@
 
 Usage: silhouette_check.py TRIANGLES.trace UNCULLED.png CULLED.png [--margin PX] [--picture OUT.png]
 
-TRIANGLES.trace is the unculled run's `render --dump triangles=FILE`. A
+TRIANGLES.trace is the unculled run's `render --dump triangle=FILE`, of a
+one-frame input (the PNGs are the last frame). A
 silhouette edge is an edge two triangles share (the same two screen corners,
 as written) whose windings on the screen differ: one faces the camera, the
 other away. Every pixel that differs between the two frames must lie within
@@ -29,6 +30,8 @@ def read_triangles(path):
         f = line.split()
         if not f:
             continue
+        if f[0] == "frame":
+            sys.exit(f"{path}: more than one frame: the check compares one frame")
         if f[0] == "q":
             q = float(f[1])
         elif f[0] == "tri":

@@ -9,7 +9,9 @@
 namespace girtd {
 
 DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const ClockProbe& probe) const {
-  DdaDatapath dp(params_, in, !skip_unreachable_wraps_ || may_wrap(params_, in));
+  // The wrap detector's registers, unless simulator pruning knows nothing can wrap.
+  const bool detect = !skip_unreachable_wraps_ || may_wrap(params_, in);
+  DdaDatapath dp(params_, in, detect);
   // One Norm unit per edge: an interior edge's (edge flags) has no fringe.
   auto norm_unit = [&](int e) {
     return NormUnit(params_.ep_d, params_.norm_frac_bits, (in.hard_edges >> e) & 1 ? 0.0 : in.q);
@@ -53,9 +55,10 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
   const uint64_t rows = static_cast<uint64_t>(in.ymax - in.y0 + 2);
   const uint64_t clock_bound = (3 * width + 16) * rows + 16;
 
+  DdaRegisters exact;  // this clock's registers had no adder wrapped (when detecting)
   for (;;) {
     const DdaRegisters r = dp.pix();  // this clock's pixel, before the clock's op
-    const DdaRegisters exact = dp.exact();  // the same, had no adder wrapped
+    if (detect) exact = dp.exact();
     const DdaState now = state;
     d_tested = false;
     bool emit = false, done = false;
@@ -65,7 +68,7 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
         // T's 1.0 is 256, carried out as 255 by design (models/dda/README.md): not a clip.
         const bool t_one = i == kEpT && (r.v[i] >> dp.format(i).frac_bits) == 256;
         saturations[i] += !t_one && output_saturates(r.v[i], dp.format(i));
-        wraps[i] += r.v[i] != exact.v[i];
+        wraps[i] += detect && r.v[i] != exact.v[i];
       }
       if (!sink) return;
       DdaEmit e;
@@ -185,7 +188,7 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
     }
 
     // A wrapped D read this clock can put the pixel on the wrong side of an edge.
-    if (d_tested)
+    if (d_tested && detect)
       for (int e = kEpD1; e <= kEpD3; ++e) wraps[e] += r.v[e] != exact.v[e];
     ++st.cycles;
     st.emitted += emit;
@@ -195,6 +198,7 @@ DdaRunStats DdaEngine::run(const DdaParams& in, const PixelSink& sink, const Clo
     if (st.cycles > clock_bound) throw std::logic_error("DDA: traversal did not terminate");
   }
   st.triangles = 1;
+  st.undetected = !detect;
   st.numerics = run_numerics(in, wraps, saturations);
   return st;
 }

@@ -40,6 +40,9 @@ struct DdaRunStats {
   EpNumerics numerics;     // wraps and output saturations (clamps: the preparer's)
   std::array<uint64_t, static_cast<int>(DdaState::kCount)> per_state{};
   bool ended_at_limit = false;  // DDApix as written ended a walk at Xmin/Xmax
+  // Simulator, not hardware: runs without the wrap detector's registers
+  // (skip_unreachable_wraps: nothing could wrap). Not in report.json's counts.
+  uint64_t undetected = 0;
   uint64_t wasted() const { return cycles - emitted; }
 };
 

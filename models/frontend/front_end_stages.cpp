@@ -107,6 +107,7 @@ std::optional<FrontPolygon> FrontEndStages::light(size_t i) {
   out.source = i;
   if (options_.prune_lighting_out_of_view && view_volume_.misses(poly.p)) {
     for (const Vec3& p : poly.p) out.v.push_back({p, 0, 0, 0, 1, false});  // its colours are never drawn
+    ++counts_.unlit;
     return out;
   }
   if (normals_.empty()) normals_ = vertex_normals(frame.polygons);

@@ -19,6 +19,8 @@ struct FrontendCounts {
   // removed: what the flops they would have cost are computed from.
   uint64_t object_culled_corners = 0, object_culled_corner_lights = 0;
   uint64_t culled_corners = 0, culled_corner_lights = 0;
+  // Simulator, not hardware: polygons pruning left unlit (not in report.json's counts).
+  uint64_t unlit = 0;
   uint64_t clipped = 0;                  // polygons cut by the depth clip (some vertex at Zs <= C)
   uint64_t clipped_away = 0;             // polygons wholly at Zs <= C: dropped
   uint64_t degenerate_polygons = 0;      // no area (polygon_shape.hpp), at input or after the clip: dropped
@@ -47,6 +49,7 @@ struct FrontendCounts {
     object_culled_corner_lights += o.object_culled_corner_lights;
     culled_corners += o.culled_corners;
     culled_corner_lights += o.culled_corner_lights;
+    unlit += o.unlit;
     clipped += o.clipped;
     clipped_away += o.clipped_away;
     degenerate_polygons += o.degenerate_polygons;

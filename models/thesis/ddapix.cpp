@@ -28,7 +28,7 @@ int thesis_nf(int64_t d1, int64_t d2, int64_t d3, int64_t t) {
 }
 
 DdaRunStats DdaPix::run(const DdaParams& in, const DdaEngine::PixelSink& sink) const {
-  DdaDatapath dp(params_, in);
+  DdaDatapath dp(params_, in, false);  // the appendix program's numerics are its own: no wrap detector
   const int64_t threshold = inside_ == ThesisInside::kProgram ? -kOne16 : 0;
   DdaRunStats st;
 

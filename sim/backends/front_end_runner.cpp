@@ -11,6 +11,14 @@ uint64_t passes = 0;
 uint64_t front_end_passes() { return passes; }
 void count_front_end_pass() { ++passes; }
 
+FrontEndOptions front_end_options(const Params& params, const PrunePlan& plan) {
+  FrontEndOptions o;
+  o.cull_objects = params.cull_objects;
+  o.cull_back_faces_always = params.cull_back_faces_always;
+  o.prune_lighting_out_of_view = plan.lighting_out_of_view;
+  return o;
+}
+
 FrontEndRun run_front_end(const Trace& polygons, const Params& params, const PrunePlan& prune) {
   count_front_end_pass();
   FrontEnd fe(ScreenMap{params.screen_width, params.screen_height}, params.depth_max_mapped,

@@ -11,6 +11,7 @@
 
 #include "backends/prune_plan.hpp"
 #include "config/params.hpp"
+#include "frontend/front_end_stages.hpp"
 #include "frontend/frontend_counts.hpp"
 #include "io/trace.hpp"
 
@@ -22,6 +23,10 @@ struct FrontEndRun {
 };
 
 FrontEndRun run_front_end(const Trace& polygons, const Params& params, const PrunePlan& prune);
+
+// The front end's options: the configuration's culling (modeled hardware)
+// and the plan's pruning (the simulator).
+FrontEndOptions front_end_options(const Params& params, const PrunePlan& plan);
 
 // Runs of the front end over an input in this process: run_front_end and the
 // pipeline's front-end stages each add one.

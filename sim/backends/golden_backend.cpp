@@ -12,6 +12,7 @@ void accumulate(DdaRunStats& total, const DdaRunStats& one) {
   total.emitted += one.emitted;
   for (size_t i = 0; i < total.per_state.size(); ++i) total.per_state[i] += one.per_state[i];
   total.ended_at_limit = total.ended_at_limit || one.ended_at_limit;
+  total.undetected += one.undetected;
 }
 
 void GoldenBackend::begin(const Trace& trace) {

@@ -45,8 +45,8 @@ int main(int argc, char** argv) {
   render->add_flag("--z-png", ra.z_png, "also write z.png (16-bit depth)");
   render->add_flag("--quiet", ra.quiet, "print nothing on success");
   render->add_flag("--no-prune", ra.no_prune,
-                   "compute every unit, skipping nothing the output does not need (same outputs, slower; "
-                   "report.json left_out lists what a pruned run skips)");
+                   "compute everything, even what no output depends on (the same outputs; report.json's left_out "
+                   "lists what a pruned run skipped)");
 
   ConfigFiles claims_config;
   CLI::App* claims = app.add_subcommand("claims", "the thesis' claims (GIRTD.md §9) against measurements");

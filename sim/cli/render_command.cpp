@@ -75,7 +75,7 @@ LoadedInput load_input(const RenderArgs& a, const Params& params, bool untimed) 
       for (DdaParams& d : f.dda) d.q = *a.aa;
     }
   }
-  in.prune = plan_pruning(in.polygons ? *in.polygons : in.trace, a.backend, !a.no_prune);
+  in.prune = plan_pruning(in.polygons ? *in.polygons : in.trace, !a.no_prune);
   if (in.polygons && untimed) {
     FrontEndRun run = run_front_end(*in.polygons, params, in.prune);
     in.trace = std::move(run.triangles);
@@ -175,7 +175,7 @@ int run_render(const RenderArgs& a) {
     }
   if (ctx.backend == "rtl") ctx.rtl_build = built_rtl_key();
   ctx.front_end_passes = front_end_passes();
-  ctx.left_out = input.prune.left_out;
+  ctx.left_out = left_out(out.stats);
   const nlohmann::json report = make_report(ctx, out.stats, params);
 
   OutputSet files(dir);

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "backends/front_end_runner.hpp"
 #include "backends/render_session.hpp"
 #include "dda/dda_preparer.hpp"
 #include "frontend/front_end_stages.hpp"

@@ -269,9 +269,8 @@ std::vector<ReportKey> make_keys() {
           "model's missing `.mtl`, an unknown material: `io/README.md`); empty when there were none",
           kEvery, [](auto& r) { return json(r.ctx.warnings); }),
       key("left_out", "list",
-          "what the simulator skipped computing for this input, `{\"unit\", \"reason\"}` each "
-          "(`sim/backends/prune_plan.hpp`): nothing the outputs depend on; `render --no-prune` skips nothing "
-          "that can be computed",
+          "what the simulator skipped computing in this run, `{\"unit\", \"reason\"}` each, the reason saying "
+          "how much (`sim/backends/prune_plan.hpp`): nothing the outputs depend on; empty with `render --no-prune`",
           kEvery, [](auto& r) {
             json out = json::array();
             for (const LeftOut& l : r.ctx.left_out) out.push_back({{"unit", l.unit}, {"reason", l.reason}});

@@ -175,18 +175,33 @@ TEST_CASE("may_wrap: the register's extremes over the visited lattice, worked by
   CHECK(may_wrap(p, d));
   d.ep[kEpR].dy = -50;  // going down, far from the bottom: -2^19 is far
   CHECK_FALSE(may_wrap(p, d));
+  // A start right of the limits' left end, R falling to the left: X = 0 is
+  // 5 steps left of x0 = 5, R = -2^19 + 40 - 5 x 10 = -2^19 - 10 there.
+  d = DdaParams{};
+  d.x0 = 5, d.y0 = 0, d.xmin = 0, d.xmax = 5, d.ymax = 3;
+  d.ep[kEpR] = {-(int64_t{1} << 19) + 40, 10, 0};
+  CHECK(may_wrap(p, d));
+  d.ep[kEpR].v += 10;  // -2^19 exactly at X = 0: fits
+  CHECK_FALSE(may_wrap(p, d));
 }
 
 TEST_CASE("skipping the wrap detector where nothing can wrap changes no count", "[dda][prune]") {
   // Triangles up to 6,000 px across, so the D EPs (12 integer bits) wrap in
   // some: their numerics must be the same with the skip as without.
-  const Params p = Params::defaults();
+  // The sequencer's variants take turns: DDApix as written (no walk fix),
+  // an unpipelined compare, far edges as constants, edge flags (hard edges).
   std::mt19937 rng(20261202);
   int safe = 0, unsafe = 0, wrapped = 0;
   for (int n = 0; n < 400; ++n) {
+    Params p = Params::defaults();
+    p.walk_fix = n % 5 != 1;
+    p.xy_compare_pipelined = n % 5 != 2;
+    p.far_edges_constant = n % 5 == 3;
+    p.edge_flags = n % 5 == 4;
     FrameSettings f;
     f.q = n % 2;
-    const Triangle t = random_triangle(rng, n % 4 == 0 ? 6000 : 300);
+    Triangle t = random_triangle(rng, n % 4 == 0 ? 6000 : 300);
+    t.interior_edges = static_cast<uint8_t>(n % 8);
     DdaPreparer prep(p);
     DdaParams d;
     if (prep.prepare(t, f, d) != PrepareResult::kReady) continue;
@@ -204,7 +219,9 @@ TEST_CASE("skipping the wrap detector where nothing can wrap changes no count", 
       REQUIRE(sa.numerics.ep[i].saturations == sb.numerics.ep[i].saturations);
     }
     REQUIRE(a.size() == b.size());
-    for (size_t k = 0; k < a.size(); ++k) REQUIRE((a[k].x == b[k].x && a[k].y == b[k].y && a[k].nf == b[k].nf));
+    for (size_t k = 0; k < a.size(); ++k)
+      REQUIRE((a[k].x == b[k].x && a[k].y == b[k].y && a[k].nf == b[k].nf && a[k].r == b[k].r &&
+               a[k].g == b[k].g && a[k].b == b[k].b && a[k].z == b[k].z));
     wrapped += sa.numerics.wraps() > 0;
   }
   CHECK(safe > 200);   // the skip is taken
