@@ -1,5 +1,6 @@
 #include "config/config_layers.hpp"
 
+#include <functional>
 #include <optional>
 
 #include "common/file_text.hpp"
@@ -15,6 +16,15 @@ ConfigLayers ConfigLayers::builtin() {
   const std::string text = kDefaultConfigJson;
   c.merged_ = json::parse(text);
   for (const auto& [key, line] : json_key_lines(text)) c.places_[key] = {kDefaultConfigPath, line, 0};
+  // A key the built-in configuration leaves null takes a number or null.
+  std::function<void(const json&, const std::string&)> find_nullable = [&](const json& j, const std::string& path) {
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      const std::string key = path.empty() ? it.key() : path + "." + it.key();
+      if (it->is_object()) find_nullable(*it, key);
+      if (it->is_null()) c.nullable_.insert(key);
+    }
+  };
+  find_nullable(c.merged_, "");
   return c;
 }
 
@@ -52,8 +62,11 @@ void ConfigLayers::merge(json& base, const json& patch, const std::string& path,
     // A real may replace a real; an integer field takes integers only.
     const bool both_numbers =
         target.is_number() && it->is_number() && (!target.is_number_integer() || it->is_number_integer());
-    if (!both_numbers && target.type() != it->type())
-      throw InputError(origin, at, key + ": has the wrong type (expected " + std::string(target.type_name()) + ")");
+    const bool nullable = nullable_.count(key) && (it->is_null() || it->is_number());
+    if (!both_numbers && !nullable && target.type() != it->type())
+      throw InputError(origin, at, key + ": has the wrong type (expected " +
+                                       (nullable_.count(key) ? std::string("a number or null")
+                                                             : std::string(target.type_name())) + ")");
     target = *it;
     places_[key] = {origin, at, layers_};
   }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,7 @@ class ConfigLayers {
              const std::map<std::string, int>& lines);
   nlohmann::json merged_;
   std::map<std::string, Place> places_;
+  std::set<std::string> nullable_;  // keys null in the built-in configuration: a number or null
   std::vector<std::string> files_;
   int layers_ = 0;
 };

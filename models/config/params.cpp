@@ -104,6 +104,10 @@ Params build(const ConfigLayers& layers) {
     p.xy_compare_pipelined = r.flag("dda.xy_compare_pipelined");
     p.walk_fix = r.flag("dda.walk_fix");
     p.output_latency_clocks = r.integer("dda.output_latency_clocks", 1, 8);
+    if (!r.at("dda.q_override").is_null()) {
+      p.q_override = r.real("dda.q_override");
+      if (!(*p.q_override >= 0 && *p.q_override <= 64)) r.fail("dda.q_override", "must be null or 0..64");
+    }
 
     const std::string far = r.text("preparer.far_edges");
     if (far != "as_computed" && far != "constant") r.fail("preparer.far_edges", "must be \"as_computed\" or \"constant\"");

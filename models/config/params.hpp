@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,9 @@ struct Params {
   bool xy_compare_pipelined;  // TTL option: +1 clock at every run end
   bool walk_fix;              // robust start/walk (GIRTD.md §11); false = DDApix as written
   int output_latency_clocks;  // fig. 4.17 output registers
+  // Every frame's antialiasing width Q, over the input's own (config
+  // dda.q_override; nullopt: the input's). Applied as inputs are read.
+  std::optional<double> q_override;
 
   // The preparer's fixes for the design's limits (config `preparer`; all off
   // in the thesis' design, on in config/presets/robust.json).

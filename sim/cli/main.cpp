@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
   CLI::Option* wave = render->add_option("--wave", ra.wave, "waveform file (.fst or .vcd)");
   render->add_option("--wave-window", ra.wave_window, "T0:T1 window of the waveform")->needs(wave);
   render->add_option("--wave-scope", ra.wave_scopes, "module path to record (repeatable)")->needs(wave);
-  render->add_option("--aa", ra.aa, "antialiasing width Q for every frame (overrides the trace)")
+  render->add_option("--aa", ra.aa, "antialiasing width Q for every frame, over the input's (shorthand for dda.q_override)")
       ->check(CLI::NonNegativeNumber);
   render->add_option("--dump", ra.dump, "LEVEL=FILE: record the stream at a stage boundary");
   render->add_option("--config", ra.config, kConfigHelp)->allow_extra_args(false);

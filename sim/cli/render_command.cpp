@@ -67,14 +67,6 @@ LoadedInput load_input(const RenderArgs& a, const Params& params, bool untimed) 
     if (t.level == TraceLevel::kPolygon) in.polygons = std::move(t);
     else in.trace = std::move(t);
   }
-  if (a.aa) {
-    Trace& t = in.polygons ? *in.polygons : in.trace;
-    for (TraceFrame& f : t.frames) {
-      f.settings.q = *a.aa;
-      f.settings.q_line = 0;
-      for (DdaParams& d : f.dda) d.q = *a.aa;
-    }
-  }
   in.prune = plan_pruning(in.polygons ? *in.polygons : in.trace, !a.no_prune);
   if (in.polygons && untimed) {
     FrontEndRun run = run_front_end(*in.polygons, params, in.prune);
@@ -125,15 +117,20 @@ void check_output_dir(const std::string& dir, const char* option) {
 
 int run_render(const RenderArgs& a) {
   reject_unbuilt_options(a);
-  const Params params = load_params(a.config);
+  Params params = load_params(a.config);
+  if (a.aa) {  // the shorthand for dda.q_override
+    params.q_override = *a.aa;
+    params.source["dda"]["q_override"] = *a.aa;
+  }
   std::optional<WaveOptions> wave;  // checked before the input is read
   if (!a.wave.empty() || !a.wave_window.empty() || !a.wave_scopes.empty())
     wave = parse_wave_options(a.wave, a.wave_window, a.wave_scopes, params.dda_clock_ns, params.base_tick_ns);
   const bool pipelined = is_pipeline_backend(a.backend);
   std::unique_ptr<Backend> backend;
   if (!pipelined) backend = make_backend(a.backend, params);
-  if (a.aa && !is_hardware_q(*a.aa) && a.backend != "reference")
-    throw InputError("--aa", 0, "Q must be 0 or a power of two 1/16..8 for the hardware back ends");
+  if (params.q_override && !is_hardware_q(*params.q_override) && a.backend != "reference")
+    throw InputError(a.aa ? "--aa" : "dda.q_override", 0,
+                     "Q must be 0 or a power of two 1/16..8 for the hardware back ends");
   const std::string dir = a.out_dir.empty() ? "out/" + fs::path(a.input).stem().string() : a.out_dir;
   check_output_dir(dir, "--out");
   if (wave) check_output_dir(fs::path(wave->path).parent_path().string(), "--wave");

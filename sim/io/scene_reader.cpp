@@ -445,10 +445,13 @@ class SceneReader {
 
 }  // namespace
 
-Trace read_scene(const std::string& path, const Params& params) { return SceneReader(path, params).read(); }
+Trace read_scene(const std::string& path, const Params& params) {
+  Trace t = SceneReader(path, params).read();
+  apply_q_override(t, params);
+  return t;
+}
 
 Trace scene_from_model(const std::string& path, const Params& params) {
-  (void)params;
   std::vector<std::string> warnings;
   const Mesh mesh = import_model(path, warnings);
   Instance in;
@@ -464,6 +467,7 @@ Trace scene_from_model(const std::string& path, const Params& params) {
   place({in}, tf.world);
   auto_frame(tf.world, SceneDefaults::kFovDeg, std::nullopt);
   trace.frames.push_back(std::move(tf));
+  apply_q_override(trace, params);
   return trace;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/types.hpp"
+#include "config/params.hpp"
 #include "dda/dda_params.hpp"
 #include "frontend/world_frame.hpp"
 
@@ -35,5 +36,9 @@ struct Trace {
   std::vector<std::string> warnings;
   size_t primitive_count() const;
 };
+
+// Config dda.q_override (render --aa): every frame's Q, and every DDA
+// parameter set's, replaced as the input is read (not the thesis level).
+void apply_q_override(Trace& trace, const Params& params);
 
 }  // namespace girtd

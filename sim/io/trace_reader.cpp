@@ -15,6 +15,15 @@
 
 namespace girtd {
 
+void apply_q_override(Trace& trace, const Params& params) {
+  if (!params.q_override || trace.level == TraceLevel::kThesis) return;
+  for (TraceFrame& f : trace.frames) {
+    f.settings.q = *params.q_override;
+    f.settings.q_line = 0;
+    for (DdaParams& d : f.dda) d.q = *params.q_override;
+  }
+}
+
 const char* level_name(TraceLevel level) {
   switch (level) {
     case TraceLevel::kTriangle: return "triangle";
@@ -398,6 +407,7 @@ Trace read_trace(std::istream& in, const std::string& path, std::optional<TraceL
   if (!level) throw InputError(path, 0, "empty trace: no header and no records");
   Trace t = builder.finish(*level);
   if (t.primitive_count() == 0) throw InputError(path, line_no, "the trace holds no primitives");
+  apply_q_override(t, params);
   return t;
 }
 

@@ -103,4 +103,23 @@ printf -v want "lighting %.1f," "$lighting"
 awk -v m="$lighting" 'BEGIN { exit !(m > 10) }' && [[ "$row" == *"| refuted |" ]] && ok \
   || bad "lighting needs $lighting Mflop/s: the claim must be refuted: $row"
 
+
+# dda.q_override sets every frame's Q (render --aa is its shorthand). The
+# sliver fan is drawn at q 1 in frame 1 and at q 0 in frame 2: with the
+# override at 0 both frames are the q 0 picture.
+printf '{"dda": {"q_override": 0}}\n' > "$TMP/q0.json"
+for how in "--config $TMP/q0.json" "--aa 0" ""; do
+  out=$TMP/q${how//[^a-z0-9]/}
+  "$GIRTD" render traces/sliver_fan.trace --backend golden --frames all $how --out "$out" --quiet || bad "render $how failed"
+  if [[ -n $how ]]; then cmp -s "$out/frame_000.png" "$out/frame_001.png" && ok || bad "$how: frame 1 is not drawn at q 0"
+  else cmp -s "$out/frame_000.png" "$out/frame_001.png" && bad "the input's own q is not kept" || ok; fi
+done
+jq -e '.config.dda.q_override == 0' "$TMP/qaa0/report.json" >/dev/null && ok || bad "--aa not echoed as dda.q_override"
+printf '{"dda": {"q_override": 0.3}}\n' > "$TMP/q03.json"
+"$GIRTD" render traces/sliver_fan.trace --backend golden --config "$TMP/q03.json" --out "$TMP/q03" 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e $TMP/q03 ]] && grep -q "dda.q_override: Q must be 0 or a power of two" "$TMP/err" && ok \
+  || bad "Q 0.3 on golden: exit $rc, $(cat "$TMP/err")"
+"$GIRTD" render traces/sliver_fan.trace --backend reference --config "$TMP/q03.json" --out "$TMP/q03r" --quiet \
+  && ok || bad "the reference back end takes any Q"
+
 finish
