@@ -46,18 +46,16 @@ bool ViewVolume::misses(const BoundingSphere& sphere) const {
   return std::any_of(sides_.begin(), sides_.end(), [&](const Vec3& n) { return dot(n, c) > r; });
 }
 
-}  // namespace girtd
-
-namespace girtd {
-
 bool ViewVolume::misses(const std::vector<Vec3>& points) const {
-  std::vector<Vec3> cam;
-  cam.reserve(points.size());
-  for (const Vec3& p : points) cam.push_back(to_camera_space(camera_, p));
-  auto all_outside = [&](auto outside) { return std::all_of(cam.begin(), cam.end(), outside); };
-  if (all_outside([&](const Vec3& c) { return c.z <= focal_; })) return true;
-  return std::any_of(sides_.begin(), sides_.end(),
-                     [&](const Vec3& n) { return all_outside([&](const Vec3& c) { return dot(n, c) > 0; }); });
+  // One pass: which faces every point so far lies outside of.
+  bool behind = true;
+  std::array<bool, 4> beyond{true, true, true, true};
+  for (const Vec3& p : points) {
+    const Vec3 c = to_camera_space(camera_, p);
+    behind = behind && c.z <= focal_;
+    for (size_t k = 0; k < sides_.size(); ++k) beyond[k] = beyond[k] && dot(sides_[k], c) > 0;
+  }
+  return behind || std::any_of(beyond.begin(), beyond.end(), [](bool b) { return b; });
 }
 
 }  // namespace girtd

@@ -47,11 +47,11 @@ OpCount lighting_ops(size_t n, size_t lights) {
   return kAreaTestFixed + (kAreaTestPerCorner + kLightCorner) * n + kLightCornerLight * (n * lights);
 }
 
-// The centre of the stored sphere into camera space (9 mul, 9 add); the
-// radius scaled by the object's scale (1 mul); the near test (1 add, 1
+// The centre of the stored sphere into camera space (as a corner in view);
+// the radius scaled by the object's scale (1 mul); the near test (1 add, 1
 // compare); the four sides through the eye, their unit normals set once a
 // frame (2 mul, 1 add, 1 compare each).
-OpCount object_culling_ops() { return OpCount{9, 9, 0, 0} + OpCount{0, 1, 0, 0} + OpCount{2, 0, 0, 0} + OpCount{2, 2, 0, 0} * 4; }
+OpCount object_culling_ops() { return kViewCorner + OpCount{0, 1, 0, 0} + OpCount{2, 0, 0, 0} + OpCount{2, 2, 0, 0} * 4; }
 
 // The polygon's normal is stored with its vertex normals (a zero normal
 // marks no area: 1 compare); centroid (3 add per corner, 1/n: 1 div, 3 mul),

@@ -19,6 +19,7 @@
 #include "cli/output_set.hpp"
 #include "cli/leave_out_bench.hpp"
 #include "cli/pipeline_bench.hpp"
+#include "io/image_compare.hpp"
 #include "io/workload_list.hpp"
 #include "common/input_error.hpp"
 #include "io/trace_reader.hpp"
@@ -28,31 +29,6 @@ namespace girtd {
 namespace fs = std::filesystem;
 
 namespace {
-
-struct ImageError {
-  double mean_abs = 0;
-  int max_abs = 0;
-  double differing_fraction = 0;
-};
-
-ImageError compare(const RgbImage& a, const RgbImage& b) {
-  ImageError e;
-  uint64_t sum = 0, differing = 0;
-  const size_t n = a.rgb.size() / 3;
-  for (size_t i = 0; i < n; ++i) {
-    bool diff = false;
-    for (int c = 0; c < 3; ++c) {
-      const int d = std::abs(int(a.rgb[3 * i + c]) - int(b.rgb[3 * i + c]));
-      sum += d;
-      e.max_abs = std::max(e.max_abs, d);
-      diff = diff || d != 0;
-    }
-    differing += diff;
-  }
-  e.mean_abs = double(sum) / double(3 * n);
-  e.differing_fraction = double(differing) / double(n);
-  return e;
-}
 
 // When and where: the READMEs quote bench.json (tools/bench_summary.py).
 nlohmann::json measured_on() {
@@ -103,7 +79,7 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
       auto backend = make_backend(name, params);
       const RenderOutput out = render_trace(trace, *backend, params, {});
       if (name == "reference") reference = out.shown;
-      const ImageError err = compare(out.shown, reference);
+      const ImageError err = compare_images(out.shown, reference);
       const double rate = out.stats.wall_s > 0 ? double(out.stats.pixels_generated) / out.stats.wall_s / 1e6 : 0;
       rows.push_back({{"trace", path}, {"backend", name}, {"triangles", out.stats.triangles_in},
                       {"pixels_generated", out.stats.pixels_generated}, {"wall_s", out.stats.wall_s},

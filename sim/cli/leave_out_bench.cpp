@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/child_render.hpp"
+#include "io/image_compare.hpp"
 #include "io/png_io.hpp"
 #include "io/workload_list.hpp"
 
@@ -17,14 +18,6 @@ namespace {
 
 constexpr int kPruneRuns = 5;
 constexpr const char* kCullingPreset = "config/presets/culling.json";
-
-uint64_t differing_pixels(const std::string& a, const std::string& b) {
-  const RgbImage x = read_png_rgb(a), y = read_png_rgb(b);
-  uint64_t n = 0;
-  for (size_t i = 0; i + 2 < x.rgb.size() && i + 2 < y.rgb.size(); i += 3)
-    n += x.rgb[i] != y.rgb[i] || x.rgb[i + 1] != y.rgb[i + 1] || x.rgb[i + 2] != y.rgb[i + 2];
-  return n;
-}
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -63,7 +56,8 @@ void culling_table(const ConfigFiles& config, const std::string& dir, LeaveOutBe
     }
     const bool same = t.at("image_sha256") == o.at("image_sha256");
     b.failures += !same;  // object culling must leave the frame as it was
-    const uint64_t changed = differing_pixels(base + "-thesis/frame.png", base + "-both/frame.png");
+    const uint64_t changed =
+        compare_images(read_png_rgb(base + "-thesis/frame.png"), read_png_rgb(base + "-both/frame.png")).differing;
     auto ms = [](const nlohmann::json& r) { return r.at("modeled_time_s").get<double>() * 1e3; };
     auto rate = [](const nlohmann::json& r) { return r.at("modeled_mpixels_per_s").get<double>(); };
     const nlohmann::json& of = o.at("frontend");
