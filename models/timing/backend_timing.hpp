@@ -62,6 +62,12 @@ class BackendTimingModel {
   // arrives later than that: the DDA idles until `tick`.
   uint64_t dda_ready_tick() const { return next_en(dda_at_); }
   void idle_until(uint64_t tick) { dda_at_ = std::max(dda_at_, tick); }
+  // A triangle not simulated (sampled timing): the DDA is taken for `ticks`
+  // from its ready tick, the HAD and FIFO go on with what they hold.
+  void skip_triangle(uint64_t ticks) {
+    dda_at_ = next_en(dda_at_) + ticks;
+    t_.ticks = std::max(t_.ticks, dda_at_);
+  }
 
  private:
   uint64_t next_en(uint64_t tick) const;  // first DDA-enabled tick at or after `tick`

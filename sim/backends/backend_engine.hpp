@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "dda/dda_engine.hpp"
 #include "dda/dda_params.hpp"
 #include "backends/prune_plan.hpp"
+#include "backends/sampled_timing.hpp"
 #include "had/had.hpp"
 #include "io/png_io.hpp"
 
@@ -34,6 +36,7 @@ struct BackendResult {
   uint64_t had_busy_ticks = 0;
   uint64_t had_vram_wait_ticks = 0;  // HAD waiting for a page (write-back and fetch)
   uint64_t fifo_max = 0;          // DDA -> HAD FIFO
+  std::optional<SamplingStats> sampling;  // approx with sampled timing
 };
 
 class BackendEngine {

@@ -37,6 +37,7 @@ struct RenderOptions {
   const Trace* polygon_source = nullptr;
   std::optional<WaveOptions> wave;  // --wave (the rtl back end)
   PrunePlan prune;                  // what the simulator may leave out (render --no-prune: nothing)
+  std::optional<double> sample_timing;  // approx: time this fraction of the triangles (backends/sampled_timing.hpp)
 };
 
 RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& params, const RenderOptions& opt);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "backends/sampled_timing.hpp"
 #include "dda/dda_engine.hpp"
 #include "dda/dda_preparer.hpp"
 #include "frontend/frontend_counts.hpp"
@@ -61,6 +62,7 @@ struct RunStats {
   std::optional<FrontendCounts> frontend;  // when the input entered above the front end
   std::vector<StageStats> stages;
   std::optional<PipelineTiming> timing;
+  std::optional<SamplingStats> sampling;  // approx with sampled timing (render --sample-timing)
   double wall_s = 0;
 };
 

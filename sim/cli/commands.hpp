@@ -25,6 +25,7 @@ struct RenderArgs {
   bool z_png = false;
   bool quiet = false;
   bool no_prune = false;
+  std::optional<double> sample_timing;  // approx: sampled timing (the accuracy command's estimator)
 };
 
 int run_render(const RenderArgs& a);

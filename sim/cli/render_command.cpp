@@ -37,6 +37,10 @@ DumpRequest parse_dump(const std::string& spec) {
 void reject_unbuilt_options(const RenderArgs& a) {
   if (!a.wave.empty() && !is_pipeline_backend(a.backend))
     throw InputError("--wave", 0, "waveforms record the SystemC pipeline: use --backend rtl (or approx)");
+  if (a.sample_timing && a.backend != "approx")
+    throw InputError("--sample-timing", 0, "sampled timing is an estimator of the approx back end: use --backend approx");
+  if (a.sample_timing && !(*a.sample_timing > 0 && *a.sample_timing <= 1))
+    throw InputError("--sample-timing", 0, "the rate must lie in (0, 1]");
 }
 
 // What render draws: the triangle- or DDA-level trace, and for models,
@@ -146,6 +150,7 @@ int run_render(const RenderArgs& a) {
   if (input.polygons) opt.polygon_source = &*input.polygons;
   opt.wave = wave;
   opt.prune = input.prune;
+  opt.sample_timing = a.sample_timing;
   RenderOutput out;
   if (pipelined) {
     out = run_pipeline(a.backend, input.polygons ? *input.polygons : trace, params, opt);
@@ -170,6 +175,18 @@ int run_render(const RenderArgs& a) {
       std::fprintf(stderr, "warning: %s\n", w->c_str());
       ctx.warnings.push_back(*w);
     }
+  if (out.stats.sampling) {  // never a silently incomplete frame
+    const SamplingStats& m = *out.stats.sampling;
+    char w[320];
+    std::snprintf(w, sizeof w,
+                  "%s: sampled timing at rate %g: %llu of %llu triangles drawn, the frame is incomplete; the modeled "
+                  "time is an estimate (+-%.3g s at 99.7 %%)",
+                  a.input.c_str(), m.rate, static_cast<unsigned long long>(m.measured + m.warmed),
+                  static_cast<unsigned long long>(m.measured + m.warmed + m.skipped),
+                  m.ci_half_ticks * params.base_tick_ns * 1e-9);
+    std::fprintf(stderr, "warning: %s\n", w);
+    ctx.warnings.push_back(w);
+  }
   if (ctx.backend == "rtl") ctx.rtl_build = built_rtl_key();
   ctx.front_end_passes = front_end_passes();
   ctx.left_out = left_out(out.stats);

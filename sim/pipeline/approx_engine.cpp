@@ -1,6 +1,7 @@
 // The approx back end: the golden DDA and HAD decide every pixel; the event
 // model of models/timing decides when (its error against the RTL is measured
 // by `girtd bench`, not assumed).
+#include <optional>
 #include <vector>
 
 #include "backends/golden_backend.hpp"
@@ -13,9 +14,11 @@ namespace {
 
 class ApproxEngine : public BackendEngine {
  public:
-  explicit ApproxEngine(const Params& p)
+  ApproxEngine(const Params& p, std::optional<double> sample_rate)
       : period_ticks_(static_cast<uint64_t>(p.ticks(p.dda_clock_ns))), dda_(p), fb_(p.screen_width, p.screen_height, static_cast<uint16_t>(p.depth_clear)), had_(fb_, p.one_minus_nf),
-        timing_(p) {}
+        timing_(p) {
+    if (sample_rate) sampler_.emplace(*sample_rate);
+  }
   void prune(const PrunePlan& plan) override { dda_.skip_unreachable_wraps(plan.unreachable_wraps); }
   uint64_t ready_tick() override { return timing_.dda_ready_tick(); }
   void idle_until(uint64_t tick) override { timing_.idle_until(tick); }
@@ -25,6 +28,23 @@ class ApproxEngine : public BackendEngine {
     timing_.begin_frame();
   }
   void draw(const DdaParams& d) override {
+    if (!sampler_) return simulate(d);
+    const uint64_t start = timing_.dda_ready_tick();
+    switch (sampler_->next()) {
+      case TriangleSampler::Role::kMeasure:
+        simulate(d);
+        sampler_->measured(d, timing_.dda_ready_tick() - start);
+        break;
+      case TriangleSampler::Role::kWarm:
+        simulate(d);
+        sampler_->warmed();
+        break;
+      case TriangleSampler::Role::kSkip:
+        timing_.skip_triangle(sampler_->skip(d));
+        break;
+    }
+  }
+  void simulate(const DdaParams& d) {
     timing_.begin_triangle();
     const DdaRunStats st = dda_.run(d, [&](const DdaEmit& e) {
       timing_.pixel({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel, d.layer, e.covered)});
@@ -50,6 +70,7 @@ class ApproxEngine : public BackendEngine {
     r.had_busy_ticks = t.had_busy_ticks;
     r.had_vram_wait_ticks = t.had_vram_wait_ticks;
     r.fifo_max = static_cast<uint64_t>(t.fifo_max);
+    if (sampler_) r.sampling = sampler_->stats();
     return r;
   }
   RgbImage shown() const override { return shown_image(fb_); }
@@ -62,10 +83,13 @@ class ApproxEngine : public BackendEngine {
   Had had_;
   BackendTimingModel timing_;
   BackendResult r_;
+  std::optional<TriangleSampler> sampler_;
 };
 
 }  // namespace
 
-std::unique_ptr<BackendEngine> make_approx_engine(const Params& p) { return std::make_unique<ApproxEngine>(p); }
+std::unique_ptr<BackendEngine> make_approx_engine(const Params& p, std::optional<double> sample_rate) {
+  return std::make_unique<ApproxEngine>(p, sample_rate);
+}
 
 }  // namespace girtd

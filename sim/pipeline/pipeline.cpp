@@ -15,11 +15,13 @@
 
 namespace girtd {
 
-std::unique_ptr<BackendEngine> make_approx_engine(const Params& p);
+std::unique_ptr<BackendEngine> make_approx_engine(const Params& p, std::optional<double> sample_rate);
 
-// "approx" or "rtl"; `traced`: the rtl engine on the build with FST tracing.
-std::unique_ptr<BackendEngine> make_backend_engine(const std::string& backend, const Params& p, bool traced) {
-  if (backend == "approx") return make_approx_engine(p);
+// "approx" or "rtl"; `traced`: the rtl engine on the build with FST tracing;
+// `sample_rate`: approx's sampled timing.
+std::unique_ptr<BackendEngine> make_backend_engine(const std::string& backend, const Params& p, bool traced,
+                                                   std::optional<double> sample_rate) {
+  if (backend == "approx") return make_approx_engine(p, sample_rate);
   if (backend == "rtl") return make_backend_rtl(p, 0, traced);
   throw std::logic_error("not a pipeline back end: " + backend);
 }
@@ -40,7 +42,7 @@ void check_pipeline_input(const Trace& trace) {
 
 PipelineElaboration::PipelineElaboration(const std::string& backend, const Trace& input, const Params& p,
                                          const RenderOptions& opt, DumpTap* tap)
-    : p_(p), opt_(opt), engine_(make_backend_engine(backend, p, opt.wave.has_value())), backend_(backend) {
+    : p_(p), opt_(opt), engine_(make_backend_engine(backend, p, opt.wave.has_value(), opt.sample_timing)), backend_(backend) {
   engine_->prune(opt.prune);
   for (const TraceFrame& f : input.frames) settings_.push_back(f.settings);
   // The stream that entered is dumped as it is; one made inside, by the

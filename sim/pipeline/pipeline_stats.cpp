@@ -14,6 +14,7 @@ void PipelineElaboration::collect(RunStats& s) const {
   s.pixels_generated = be.pixels_generated;
   s.had = be.had;
   s.dda = be.dda;
+  s.sampling = be.sampling;
   s.frames = settings_.size();
   if (preparer_) s.preparer = preparer_->counts();
   if (polygon_source_) {

