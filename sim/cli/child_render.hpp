@@ -11,7 +11,9 @@
 
 namespace girtd {
 
+// `log`: the child's stdout and stderr go there ("" keeps ours).
 nlohmann::json render_in_child(const std::string& input, const std::string& backend, const std::string& dir,
-                               const ConfigFiles& config, const std::vector<std::string>& extra = {});
+                               const ConfigFiles& config, const std::vector<std::string>& extra = {},
+                               const std::string& log = "");
 
 }  // namespace girtd

@@ -17,6 +17,7 @@
 
 #include "claims/dda_efficiency.hpp"
 #include "claims/ep_error.hpp"
+#include "claims/ep_precision.hpp"
 #include "claims/numeric_limits.hpp"
 #include "io/subprocess.hpp"
 #include "claims/thesis_losses.hpp"
@@ -84,6 +85,28 @@ void error_rows(const Params& p, std::vector<ClaimRow>& rows) {
                   e.max_color_lsb <= colour_bound ? "confirmed" : "refuted"});
   rows.push_back({"error after <= 1024 steps, edge distance", "<= 0.125 px",
                   fmt("max %.4f px", e.max_d_px), e.max_d_px <= d_bound ? "confirmed" : "refuted"});
+}
+
+// A row per EP: is the hardware chapter's fraction width the fewest that
+// keeps the thesis' budget over 1,024 steps (claims/ep_precision.hpp)?
+void precision_rows(const Params& p, std::vector<ClaimRow>& rows) {
+  for (EpKind ep : kEpKinds) {
+    const EpPrecision r = ep_precision(p, ep);
+    const std::string key = std::string("ep.") + ep_key(ep) + ".frac_bits";
+    const std::string unit = ep_unit(ep);
+    std::string verdict = "confirmed";
+    if (r.fewest_1024 < 0) verdict = fmt("refuted (needs more than %.0f bits)", r.configured + 8);
+    else if (r.fewest_1024 < r.configured) verdict = fmt("refuted (%.0f bits suffice)", r.fewest_1024);
+    else if (r.fewest_1024 > r.configured) verdict = fmt("refuted (needs %.0f bits)", r.fewest_1024);
+    rows.push_back({"fraction bits of EP " + std::string(ep_key(ep)) + " (" + key + fmt(" = %.0f)", r.configured),
+                    fmt(ep == EpKind::kD ? "<= %.3f px over 1024 steps" : "<= %.0f LSB over 1024 steps", ep_budget(ep)) +
+                        (ep == EpKind::kZ ? " (no budget stated for Z: 1 LSB of its 16-bit output assumed)" : "") +
+                        " (+ half a fraction LSB: the start value's rounding)",
+                    fmt("fewest keeping it: %.0f bits over 1,024 steps, %.0f over 2,048; ", r.fewest_1024, r.fewest_2048) +
+                        fmt("with %.0f: ", r.configured) + fmt("%.3f ", r.error_1024) + unit +
+                        fmt(" (1,024), %.3f ", r.error_2048) + unit + " (2,048); 2,000 random triangles",
+                    verdict});
+  }
 }
 
 // How often the demo and the sample models hit a limit or show seams: a
@@ -292,6 +315,7 @@ int run_claims(const ConfigFiles& config) {
   std::vector<ClaimRow> rows;
   dda_rows(p, rows);
   error_rows(p, rows);
+  precision_rows(p, rows);
   numerics_rows(p, config, rows);
   thesis_rows(p, rows);
   memory_rows(p, rows);

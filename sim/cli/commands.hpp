@@ -56,4 +56,14 @@ struct StressArgs {
 
 int run_stress(const StressArgs& a);
 
+struct AccuracyArgs {
+  std::vector<std::string> inputs;  // empty: traces/accuracy_inputs.txt
+  std::vector<std::string> levels;  // empty: accuracy/accuracy_levels.hpp's default
+  std::vector<std::string> vary;    // KEY=V1,V2,...
+  ConfigFiles config;
+  std::string out_dir = "out/accuracy";
+};
+
+int run_accuracy(const AccuracyArgs& a);
+
 }  // namespace girtd

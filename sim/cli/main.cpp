@@ -102,6 +102,18 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
 
+  AccuracyArgs ac;
+  CLI::App* accuracy = app.add_subcommand("accuracy", "error against run time: timing estimators against rtl, "
+                                                      "pictures against the reference and llvmpipe");
+  accuracy->add_option("inputs", ac.inputs, "inputs (default: traces/accuracy_inputs.txt)")->check(CLI::ExistingFile);
+  accuracy->add_option("--backends", ac.levels,
+                       "levels, comma-separated: rtl, approx, golden, reference, dda_bound, approx_sampled_<rate> "
+                       "(default rtl,approx,dda_bound,approx_sampled_0.1,approx_sampled_0.02; the reference always runs)")
+      ->delimiter(',');
+  accuracy->add_option("--vary", ac.vary, "KEY=V1,V2,...: a configuration key's values (repeatable: every combination)");
+  accuracy->add_option("--config", ac.config, kConfigHelp)->allow_extra_args(false);
+  accuracy->add_option("--out", ac.out_dir, "output directory")->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -129,6 +141,7 @@ int main(int argc, char** argv) {
     if (*bench) return run_bench(bench_config, bench_out, bench_pipeline, bench_leave_out, bench_bless, bench_inputs);
     if (*regress) return run_regress(rg);
     if (*stress) return run_stress(st);
+    if (*accuracy) return run_accuracy(ac);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.formatted().c_str());
     return 2;

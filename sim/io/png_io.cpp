@@ -54,4 +54,21 @@ RgbImage read_png_rgb(const std::string& path) {
   return out;
 }
 
+std::vector<uint16_t> read_png_gray16(const std::string& path, int& width, int& height) {
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&image, path.c_str()))
+    throw InputError(path, 0, std::string("cannot read PNG: ") + image.message);
+  image.format = PNG_FORMAT_LINEAR_Y;
+  width = static_cast<int>(image.width);
+  height = static_cast<int>(image.height);
+  std::vector<uint16_t> out(size_t(width) * height);
+  if (!png_image_finish_read(&image, nullptr, out.data(), 0, nullptr)) {
+    png_image_free(&image);
+    throw InputError(path, 0, std::string("cannot decode PNG: ") + image.message);
+  }
+  return out;
+}
+
 }  // namespace girtd

@@ -16,5 +16,7 @@ struct RgbImage {
 void write_png_rgb(const std::string& path, const RgbImage& img);
 void write_png_gray16(const std::string& path, int width, int height, const std::vector<uint16_t>& values);
 RgbImage read_png_rgb(const std::string& path);
+// A file write_png_gray16 wrote (z.png), value for value.
+std::vector<uint16_t> read_png_gray16(const std::string& path, int& width, int& height);
 
 }  // namespace girtd

@@ -121,6 +121,10 @@ TEST_CASE("PNG gray16 writes a 16-bit greyscale file", "[png]") {
   const RgbImage back = read_png_rgb(tmp.str());
   CHECK(back.width == 4);
   CHECK(back.height == 3);
+  // And as 16-bit values, each as written (the accuracy command reads z.png).
+  int w = 0, h = 0;
+  CHECK(read_png_gray16(tmp.str(), w, h) == z);
+  CHECK((w == 4 && h == 3));
 }
 
 }  // namespace girtd

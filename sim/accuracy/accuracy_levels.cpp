@@ -1,0 +1,37 @@
+#include "accuracy/accuracy_levels.hpp"
+
+#include <cstdlib>
+
+#include "common/input_error.hpp"
+
+namespace girtd {
+
+namespace {
+constexpr const char* kSampledPrefix = "approx_sampled_";
+}
+
+AccuracyLevel accuracy_level(const std::string& name) {
+  if (name == "rtl" || name == "approx" || name == "golden" || name == "reference") return {name, name, {}, true};
+  if (name == "dda_bound") return {name, "golden", {}, true};
+  if (name.rfind(kSampledPrefix, 0) == 0) {
+    const std::string rate = name.substr(std::string(kSampledPrefix).size());
+    char* end = nullptr;
+    const double r = std::strtod(rate.c_str(), &end);
+    if (!rate.empty() && *end == '\0' && r > 0 && r < 1) return {name, "approx", {"--sample-timing", rate}, false};
+    throw InputError("--backends", 0, "'" + name + "': the sampling rate must be a number in (0, 1), e.g. approx_sampled_0.1");
+  }
+  throw InputError("--backends", 0,
+                   "'" + name + "': not a level (rtl, approx, golden, reference, dda_bound, approx_sampled_<rate>)");
+}
+
+std::vector<std::string> default_accuracy_levels() {
+  return {"rtl", "approx", "dda_bound", "approx_sampled_0.1", "approx_sampled_0.02"};
+}
+
+std::optional<double> level_modeled_time(const AccuracyLevel& level, const nlohmann::json& report) {
+  const char* key = level.name == "dda_bound" ? "dda_bound_time_s" : "modeled_time_s";
+  if (!report.contains(key) || report[key].is_null()) return std::nullopt;
+  return report[key].get<double>();
+}
+
+}  // namespace girtd

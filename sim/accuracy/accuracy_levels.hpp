@@ -1,0 +1,31 @@
+// The levels `girtd accuracy` runs: back ends and cheaper timing
+// estimators, each a `girtd render` in its own process. A level says how
+// it is rendered and which modeled time it stands for.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace girtd {
+
+struct AccuracyLevel {
+  std::string name;     // rtl, approx, golden, reference, dda_bound, approx_sampled_<rate>
+  std::string backend;  // the render's back end
+  std::vector<std::string> render_args;
+  bool draws_frame = true;  // false: the frame is incomplete (sampled timing), no picture error
+};
+
+// Throws InputError("--backends", ...) for an unknown name.
+AccuracyLevel accuracy_level(const std::string& name);
+// The default list: rtl, approx, dda_bound and approx sampled at 1/10 and 1/50.
+std::vector<std::string> default_accuracy_levels();
+
+// The level's modeled time from its report.json: modeled_time_s for the
+// timed back ends (estimates included), the DDA-bound time (clocks x
+// period, no memory side) for dda_bound; none for golden and reference.
+std::optional<double> level_modeled_time(const AccuracyLevel& level, const nlohmann::json& report);
+
+}  // namespace girtd

@@ -1,0 +1,194 @@
+#include "accuracy/accuracy_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+namespace girtd {
+
+using json = nlohmann::json;
+
+namespace {
+
+std::string num(const json& v, const char* fmt = "%.4g") {
+  if (v.is_null()) return "—";
+  if (v.is_string()) return v.get<std::string>();
+  char b[64];
+  std::snprintf(b, sizeof b, fmt, v.get<double>());
+  return b;
+}
+
+std::string pct(const json& v) {
+  if (v.is_null()) return "—";
+  char b[64];
+  std::snprintf(b, sizeof b, "%+.3f %%", 100 * v.get<double>());
+  return b;
+}
+
+}  // namespace
+
+json picture_error_cell(const ImageError& image, const DepthError& depth) {
+  return {{"max_abs", image.max_abs},
+          {"mean_abs", image.mean_abs},
+          {"rmse", image.rmse},
+          {"psnr_db", image.psnr_db ? json(*image.psnr_db) : json()},
+          {"coverage_diff", depth.coverage_diff},
+          {"z_max_abs", depth.z_max_abs}};
+}
+
+json level_summary(const json& rows) {
+  std::map<std::string, std::vector<const json*>> by_level;
+  std::vector<std::string> order;
+  for (const json& r : rows) {
+    if (r["time_error"].is_null()) continue;
+    const std::string level = r["level"];
+    if (!by_level.count(level)) order.push_back(level);
+    by_level[level].push_back(&r);
+  }
+  json out = json::array();
+  for (const std::string& level : order) {
+    const auto& rs = by_level[level];
+    double wall = 0, sum = 0, worst = 0, sq = 0;
+    int under1 = 0, under10 = 0;
+    for (const json* r : rs) {
+      const double e = std::abs((*r)["time_error"].get<double>());
+      wall += (*r)["wall_s"].get<double>();
+      sum += e, sq += e * e, worst = std::max(worst, e);
+      under1 += e < 0.01, under10 += e < 0.10;
+    }
+    const double n = double(rs.size());
+    out.push_back({{"level", level}, {"rows", rs.size()}, {"wall_s_mean", wall / n}, {"time_error_mean_abs", sum / n},
+                   {"time_error_max_abs", worst}, {"time_error_rms", std::sqrt(sq / n)}, {"under_1pct", under1},
+                   {"under_10pct", under10}});
+  }
+  // On the front: no other level is at once no slower and no less accurate
+  // (by the maximum error), and better in one.
+  for (json& a : out) {
+    bool dominated = false;
+    for (const json& b : out)
+      dominated = dominated || (&a != &b && b["wall_s_mean"] <= a["wall_s_mean"] &&
+                                b["time_error_max_abs"] <= a["time_error_max_abs"] &&
+                                (b["wall_s_mean"] < a["wall_s_mean"] || b["time_error_max_abs"] < a["time_error_max_abs"]));
+    a["on_front"] = !dominated;
+  }
+  return out;
+}
+
+json counter_summary(const json& rows) {
+  std::map<std::string, std::map<std::string, std::pair<double, double>>> acc;  // level -> counter -> (sum, max)
+  std::map<std::string, int> n;
+  std::vector<std::string> order;
+  for (const json& r : rows) {
+    if (!r.contains("counter_error") || r["counter_error"].is_null()) continue;
+    const std::string level = r["level"];
+    if (!n.count(level)) order.push_back(level);
+    ++n[level];
+    for (const auto& [k, v] : r["counter_error"].items()) {
+      if (v.is_null()) continue;
+      auto& [sum, worst] = acc[level][k];
+      sum += std::abs(v.get<double>());
+      worst = std::max(worst, std::abs(v.get<double>()));
+    }
+  }
+  json out = json::array();
+  for (const std::string& level : order)
+    for (const auto& [k, sm] : acc[level])
+      out.push_back({{"level", level}, {"counter", k}, {"mean_abs", sm.first / n[level]}, {"max_abs", sm.second}});
+  return out;
+}
+
+json rtl_agreement(const json& rows) {
+  std::map<std::pair<std::string, std::string>, std::string> rtl_sha;
+  for (const json& r : rows)
+    if (r["level"] == "rtl" && r.contains("image_sha256")) rtl_sha[{r["input"], r["variant"]}] = r["image_sha256"];
+  json out = json::array();
+  for (const auto& [key, sha] : rtl_sha) {
+    json levels = json::array();
+    bool agrees = true;
+    for (const json& r : rows)
+      if (r["input"] == key.first && r["variant"] == key.second && r["level"] != "rtl" && r["level"] != "reference" &&
+          !r["image"].is_null()) {
+        levels.push_back(r["level"]);
+        agrees = agrees && r["image_sha256"] == sha;
+      }
+    out.push_back({{"input", key.first}, {"variant", key.second}, {"compared", levels}, {"agrees", agrees}});
+  }
+  return out;
+}
+
+std::string accuracy_markdown(const json& rows, const json& levels, const json& counters, const json& agreement) {
+  std::ostringstream o;
+  if (!agreement.empty()) {
+    o << "## The same picture on rtl (image SHA-256)\n\n| input | variant | against | agrees |\n|---|---|---|---|\n";
+    for (const json& a : agreement) {
+      std::string against;
+      for (const json& l : a["compared"]) against += (against.empty() ? "" : ", ") + l.get<std::string>();
+      o << "| " << a["input"].get<std::string>() << " | " << a["variant"].get<std::string>() << " | " << against
+        << " | " << (a["agrees"].get<bool>() ? "yes" : "**NO**") << " |\n";
+    }
+    o << "\n";
+  }
+  o << "## Timing estimate: modeled time against rtl\n\n"
+       "| level | rows | mean wall s | mean abs error | max abs error | rms | under 1 % | under 10 % | on the front |\n"
+       "|---|---|---|---|---|---|---|---|---|\n";
+  for (const json& l : levels)
+    o << "| " << l["level"].get<std::string>() << " | " << l["rows"] << " | " << num(l["wall_s_mean"]) << " | "
+      << num(json(100 * l["time_error_mean_abs"].get<double>()), "%.3f %%") << " | "
+      << num(json(100 * l["time_error_max_abs"].get<double>()), "%.3f %%") << " | "
+      << num(json(100 * l["time_error_rms"].get<double>()), "%.3f %%") << " | " << l["under_1pct"] << " | "
+      << l["under_10pct"] << " | " << (l["on_front"].get<bool>() ? "yes" : "") << " |\n";
+  o << "\n## Counters against rtl (relative difference)\n\n| level | counter | mean abs | max abs |\n|---|---|---|---|\n";
+  for (const json& c : counters)
+    o << "| " << c["level"].get<std::string>() << " | " << c["counter"].get<std::string>() << " | "
+      << num(json(100 * c["mean_abs"].get<double>()), "%.4f %%") << " | "
+      << num(json(100 * c["max_abs"].get<double>()), "%.4f %%") << " |\n";
+  o << "\n## Every row\n\nPicture error is against the reference back end (0..255 per channel; coverage in pixels); "
+       "llvmpipe only for opaque, Q = 0 triangle-level inputs.\n\n"
+       "| input | level | variant | wall s | sim Mpixel/s | modeled s | time error | max abs | mean abs | PSNR dB | "
+       "coverage diff | llvmpipe max abs | llvmpipe coverage diff |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const json& r : rows) {
+    if (r.contains("invalid")) {
+      o << "| " << r["input"].get<std::string>() << " | " << r["level"].get<std::string>() << " | "
+        << r["variant"].get<std::string>() << " | invalid: " << r["invalid"].get<std::string>() << " |||||||||\n";
+      continue;
+    }
+    const json& im = r["image"];
+    const json& lp = r["llvmpipe"];
+    o << "| " << r["input"].get<std::string>() << " | " << r["level"].get<std::string>() << " | "
+      << r["variant"].get<std::string>() << " | " << num(r["wall_s"]) << " | "
+      << num(r["sim_pixels_per_s"].is_null() ? json() : json(r["sim_pixels_per_s"].get<double>() / 1e6)) << " | "
+      << num(r["modeled_time_s"]) << " | " << pct(r["time_error"]) << " | "
+      << (im.is_null() ? "—" : num(im["max_abs"], "%g")) << " | " << (im.is_null() ? "—" : num(im["mean_abs"])) << " | "
+      << (im.is_null() ? "—" : num(im["psnr_db"], "%.2f")) << " | " << (im.is_null() ? "—" : num(im["coverage_diff"], "%g"))
+      << " | " << (lp.is_null() ? "—" : num(lp["max_abs"], "%g")) << " | "
+      << (lp.is_null() ? "—" : num(lp["coverage_diff"], "%g")) << " |\n";
+  }
+  return o.str();
+}
+
+std::string accuracy_csv(const json& rows) {
+  static const char* kColumns[] = {"input", "level", "variant", "wall_s", "sim_pixels_per_s", "dda_clocks_per_s",
+                                   "modeled_time_s", "time_error"};
+  static const char* kPicture[] = {"max_abs", "mean_abs", "rmse", "psnr_db", "coverage_diff", "z_max_abs"};
+  std::ostringstream o;
+  for (const char* c : kColumns) o << c << ",";
+  for (const char* cell : {"image", "llvmpipe"})
+    for (const char* k : kPicture) o << cell << "." << k << ",";
+  o << "invalid\n";
+  auto field = [](const json& v) {
+    if (v.is_null()) return std::string();
+    if (v.is_string()) return "\"" + v.get<std::string>() + "\"";
+    return v.dump();
+  };
+  for (const json& r : rows) {
+    for (const char* c : kColumns) o << field(r.value(c, json())) << ",";
+    for (const char* cell : {"image", "llvmpipe"})
+      for (const char* k : kPicture) o << (r.value(cell, json()).is_null() ? "" : field(r[cell][k])) << ",";
+    o << field(r.value("invalid", json())) << "\n";
+  }
+  return o.str();
+}
+
+}  // namespace girtd

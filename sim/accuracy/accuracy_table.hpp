@@ -1,0 +1,31 @@
+// `girtd accuracy`'s tables: the rows' picture-error cells, the per-level
+// summary (mean and maximum |time error| against rtl, cases under 1 % and
+// 10 %, the Pareto front of wall time against maximum error), the counters'
+// differences, and the rows as Markdown and CSV.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "io/image_compare.hpp"
+
+namespace girtd {
+
+// The contract's image / llvmpipe cell.
+nlohmann::json picture_error_cell(const ImageError& image, const DepthError& depth);
+
+// Per timing level over the rows that have a time_error.
+nlohmann::json level_summary(const nlohmann::json& rows);
+// Per level and counter: mean and maximum relative difference from rtl.
+nlohmann::json counter_summary(const nlohmann::json& rows);
+
+// Per input x variant with an rtl row: does every other complete level's
+// frame equal rtl's, byte for byte (golden, approx and rtl draw one picture)?
+nlohmann::json rtl_agreement(const nlohmann::json& rows);
+
+std::string accuracy_markdown(const nlohmann::json& rows, const nlohmann::json& levels, const nlohmann::json& counters,
+                              const nlohmann::json& agreement);
+std::string accuracy_csv(const nlohmann::json& rows);
+
+}  // namespace girtd

@@ -1,0 +1,231 @@
+// girtd accuracy: error against run time (CONTRACT.md). Every input x
+// variant x level is a `girtd render` in its own process; the reference
+// back end's frame is each row's picture yardstick, Mesa llvmpipe a second
+// one for opaque Q = 0 triangle-level inputs, rtl each row's timing one.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "accuracy/accuracy_levels.hpp"
+#include "accuracy/accuracy_table.hpp"
+#include "accuracy/config_variants.hpp"
+#include "accuracy/llvmpipe_render.hpp"
+#include "cli/child_render.hpp"
+#include "cli/commands.hpp"
+#include "cli/output_set.hpp"
+#include "common/input_error.hpp"
+#include "io/image_compare.hpp"
+#include "io/png_io.hpp"
+#include "io/subprocess.hpp"
+#include "io/trace_reader.hpp"
+#include "io/workload_list.hpp"
+
+namespace girtd {
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+constexpr const char* kDefaultInputs = "traces/accuracy_inputs.txt";
+constexpr uint16_t kZClear = 65535;
+
+struct Frame {
+  RgbImage rgb;
+  std::vector<uint16_t> z;
+};
+
+Frame read_frame(const std::string& dir) {
+  Frame f;
+  f.rgb = read_png_rgb(dir + "/frame.png");
+  int w = 0, h = 0;
+  f.z = read_png_gray16(dir + "/z.png", w, h);
+  return f;
+}
+
+// The llvmpipe yardstick applies to opaque, Q = 0, full-window triangle
+// traces; it draws the last frame.
+std::optional<Frame> llvmpipe_frame(const std::string& input, const Params& params) {
+  if (!has_trace_header(input) || header_level(input) != TraceLevel::kTriangle) return std::nullopt;
+  const Trace trace = read_trace(input, std::nullopt, params);
+  const Window full{0, 0, params.screen_width - 1, params.screen_height - 1};
+  for (const TraceFrame& f : trace.frames) {
+    if (f.settings.q != 0 || f.settings.window.x0 != full.x0 || f.settings.window.y0 != full.y0 ||
+        f.settings.window.x1 != full.x1 || f.settings.window.y1 != full.y1)
+      return std::nullopt;
+    for (const Triangle& t : f.triangles)
+      for (const Vertex& v : t.v)
+        if (v.t < 1) return std::nullopt;
+  }
+  if (trace.frames.empty()) return std::nullopt;
+  const TraceFrame& last = trace.frames.back();
+  LlvmpipeFrame l = render_llvmpipe(last.triangles, params.screen_width, params.screen_height, last.settings.background);
+  return Frame{std::move(l.rgb), std::move(l.z)};
+}
+
+json picture_error(const Frame& a, const Frame& b) {
+  return picture_error_cell(compare_images(a.rgb, b.rgb), compare_depth(a.z, b.z, kZClear));
+}
+
+json opt_number(const json& report, const char* key) {
+  return report.contains(key) && !report[key].is_null() ? report[key] : json();
+}
+
+// What the per-counter table compares with rtl.
+json counters_of(const json& report) {
+  json c = {{"dda_cycles", opt_number(report, "dda_cycles")}};
+  if (report.contains("dda_states") && report["dda_states"].is_object())
+    for (const auto& [state, clocks] : report["dda_states"].items()) c["dda_clocks." + state] = clocks;
+  if (report.contains("cache") && report["cache"].is_object()) c["page_misses"] = report["cache"]["page_misses"];
+  if (report.contains("stages") && report["stages"].contains("had")) c["had_busy_s"] = report["stages"]["had"]["busy_s"];
+  return c;
+}
+
+json relative_differences(const json& counters, const json& rtl) {
+  json out = json::object();
+  for (const auto& [k, v] : rtl.items()) {
+    if (v.is_null() || !counters.contains(k) || counters[k].is_null()) {
+      out[k] = nullptr;
+      continue;
+    }
+    const double r = v.get<double>(), x = counters[k].get<double>();
+    out[k] = r != 0 ? json((x - r) / r) : (x == 0 ? json(0.0) : json());
+  }
+  return out;
+}
+
+std::string slug(const std::string& s) {
+  std::string out;
+  for (char c : s) out += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' ? c : '_';
+  return out;
+}
+
+}  // namespace
+
+int run_accuracy(const AccuracyArgs& a) {
+  const std::vector<std::string> inputs = a.inputs.empty() ? read_input_list(kDefaultInputs) : a.inputs;
+  std::vector<AccuracyLevel> levels = {accuracy_level("reference")};  // the yardstick, run first
+  for (const std::string& name : a.levels.empty() ? default_accuracy_levels() : a.levels)
+    if (name != "reference") levels.push_back(accuracy_level(name));
+  const std::vector<ConfigVariant> variants = config_variants(a.vary);
+  load_params(a.config);  // a bad --config is bad usage, before anything runs
+
+  const fs::path runs = fs::path(a.out_dir) / "runs";
+  fs::create_directories(runs);
+  json rows = json::array();
+  const size_t total = inputs.size() * variants.size() * levels.size();
+  size_t done = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (const ConfigVariant& variant : variants) {
+    ConfigFiles config = a.config;
+    std::optional<std::string> invalid;
+    if (variant.label != "base") {
+      const fs::path file = fs::path(a.out_dir) / "configs" / (slug(variant.label) + ".json");
+      fs::create_directories(file.parent_path());
+      std::ofstream(file) << variant.override_json().dump(2) << "\n";
+      config.push_back(file.string());
+    }
+    std::optional<Params> params;
+    try {
+      params = load_params(config);
+    } catch (const InputError& e) {
+      invalid = e.formatted();
+    }
+    for (const std::string& input : inputs) {
+      const fs::path base = runs / slug(fs::path(input).filename().string()) / slug(variant.label);
+      std::optional<Frame> reference, llvmpipe;
+      if (params && !invalid) llvmpipe = llvmpipe_frame(input, *params);
+      std::optional<double> rtl_time;
+      json rtl_counters;
+      const size_t first_row = rows.size();
+      for (const AccuracyLevel& level : levels) {
+        json row = {{"input", input}, {"level", level.name}, {"variant", variant.label}, {"settings", variant.settings}};
+        ++done;
+        if (invalid) {
+          row["invalid"] = *invalid;
+          rows.push_back(row);
+          continue;
+        }
+        const std::string dir = (base / level.name).string();
+        std::vector<std::string> extra = level.render_args;
+        extra.push_back("--z-png");
+        const json report = render_in_child(input, level.backend, dir, config, extra, dir + ".log");
+        if (report.is_null()) {
+          row["invalid"] = "the render failed: " + dir + ".log";
+          std::fprintf(stderr, "girtd accuracy: %s on %s (%s) failed, see %s.log\n", input.c_str(), level.name.c_str(),
+                       variant.label.c_str(), dir.c_str());
+          rows.push_back(row);
+          continue;
+        }
+        const double wall = report["wall_s"];
+        const std::optional<double> modeled = level_modeled_time(level, report);
+        row["wall_s"] = wall;
+        row["sim_pixels_per_s"] = wall > 0 ? json(report["pixels_generated"].get<double>() / wall) : json();
+        row["dda_clocks_per_s"] = wall > 0 && !report["dda_cycles"].is_null() ? json(report["dda_cycles"].get<double>() / wall) : json();
+        row["modeled_time_s"] = modeled ? json(*modeled) : json();
+        row["time_error"] = nullptr;
+        row["image_sha256"] = report["image_sha256"];
+        if (!report["sampling"].is_null()) row["time_ci_half_s"] = report["sampling"]["ci_half_s"];
+        row["counters"] = counters_of(report);
+        row["image"] = nullptr;
+        row["llvmpipe"] = nullptr;
+        if (level.draws_frame) {
+          const Frame frame = read_frame(dir);
+          if (level.name == "reference") reference = frame;
+          if (reference) row["image"] = picture_error(frame, *reference);
+          if (llvmpipe) row["llvmpipe"] = picture_error(frame, *llvmpipe);
+        }
+        if (level.name == "rtl" && modeled) {
+          rtl_time = modeled;
+          rtl_counters = row["counters"];
+        }
+        rows.push_back(row);
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::printf("[%zu/%zu] %s %s %s: wall %.3f s, modeled %s; ETA %.0f s\n", done, total, input.c_str(),
+                    level.name.c_str(), variant.label.c_str(), wall,
+                    modeled ? (std::to_string(*modeled) + " s").c_str() : "-", elapsed / done * (total - done));
+        std::fflush(stdout);
+      }
+      // Errors against this input x variant's rtl row.
+      for (size_t i = first_row; i < rows.size() && rtl_time; ++i) {
+        json& row = rows[i];
+        if (row.contains("invalid")) continue;
+        if (!row["modeled_time_s"].is_null())
+          row["time_error"] = (row["modeled_time_s"].get<double>() - *rtl_time) / *rtl_time;
+        // Counts of a complete run only: a sampled one counts its sample.
+        if (row["level"] != "rtl" && row["level"] != "reference" && !row["image"].is_null())
+          row["counter_error"] = relative_differences(row["counters"], rtl_counters);
+      }
+    }
+  }
+
+  const json level_table = level_summary(rows);
+  const json counter_table = counter_summary(rows);
+  const json agreement = rtl_agreement(rows);
+  OutputSet files(a.out_dir);
+  files.add_text("accuracy.json", json{{"rows", rows}, {"levels", level_table}, {"counters", counter_table}, {"rtl_agreement", agreement},
+                                       {"inputs", inputs}, {"config", a.config}}
+                                      .dump(2) + "\n");
+  files.add_text("accuracy.csv", accuracy_csv(rows));
+  const std::string md = accuracy_markdown(rows, level_table, counter_table, agreement);
+  files.add_text("accuracy.md", "# girtd accuracy\n\n" + md);
+  files.commit();
+  std::fputs(md.c_str(), stdout);
+  // The plots (tools/accuracy_plots.py): Debian's python, whose matplotlib
+  // tools/girtd installs (a python3 earlier on PATH may not have it).
+  const int plot = run_process({"/usr/bin/python3", std::string(GIRTD_SOURCE_DIR) + "/tools/accuracy_plots.py", a.out_dir}, false);
+  std::printf("wrote %s, accuracy.csv, accuracy.md%s\n", files.path("accuracy.json").c_str(),
+              plot == 0 ? " and the plots" : "");
+  if (plot != 0) {
+    std::fprintf(stderr, "girtd accuracy: the plots failed (python3-matplotlib; tools/girtd installs it)\n");
+    return 1;
+  }
+  int failed = 0;
+  for (const json& r : rows) failed += r.contains("invalid") && r["invalid"].get<std::string>().rfind("the render failed", 0) == 0;
+  for (const json& a : agreement) failed += !a["agrees"].get<bool>();
+  if (failed) std::printf("%d failure(s): renders that failed, or pictures that differ from rtl's\n", failed);
+  return failed ? 1 : 0;
+}
+
+}  // namespace girtd
