@@ -9,8 +9,9 @@
   exact by definition);
 - for every configuration key the run varied (--vary):
   picture_error_<key>.png, the frame's error against the reference (max and
-  mean |LSB|, and coverage differences) over the key's values, the thesis'
-  1-LSB budget drawn as a line; and, where timed levels ran,
+  mean |LSB|, and coverage differences) over the key's values, 1 LSB drawn
+  as a line (several keys: picture_error_variant.png, one point per
+  combination); and, where timed levels ran,
   picture_vs_time_<key>.png, picture error against modeled frame time.
 Why matplotlib: it is a Debian package (offline, no bundling), writes PNG
 headless (Agg), and does log-log axes and annotations in a few lines; the
@@ -85,13 +86,17 @@ def varied_keys(rows):
 
 
 def plot_picture(doc, out_dir, key):
-    rows = [r for r in doc["rows"] if r.get("image") and key in r.get("settings", {}) and r["level"] != "reference"]
+    """key: the one varied key; None when several vary (x is then the variant's label)."""
+    value = (lambda r: r["settings"][key]) if key else (lambda r: r["variant"])
+    rows = [r for r in doc["rows"] if r.get("image") and r["level"] != "reference" and
+            (key is None or key in r.get("settings", {}))]
     if not rows:
         return []
     made = []
+    key = key or "variant"
     inputs = list(dict.fromkeys(r["input"] for r in rows))
-    numeric = all(isinstance(r["settings"][key], (int, float)) and not isinstance(r["settings"][key], bool) for r in rows)
-    values = sorted(set(r["settings"][key] for r in rows), key=lambda v: (str(type(v)), v))
+    numeric = all(isinstance(value(r), (int, float)) and not isinstance(value(r), bool) for r in rows)
+    values = sorted(set(value(r) for r in rows), key=lambda v: (str(type(v)), v))
     xpos = (lambda v: v) if numeric else (lambda v: values.index(v))
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
     cmap = plt.get_cmap("tab10")
@@ -99,15 +104,15 @@ def plot_picture(doc, out_dir, key):
         # one level's picture per input (they all draw the same one)
         pts = {}
         for r in rows:
-            if r["input"] == inp and r["settings"][key] not in pts:
-                pts[r["settings"][key]] = r["image"]
+            if r["input"] == inp and value(r) not in pts:
+                pts[value(r)] = r["image"]
         vs = [v for v in values if v in pts]
         name = os.path.basename(inp)
         ax1.plot([xpos(v) for v in vs], [pts[v]["max_abs"] for v in vs], "o-", color=cmap(i % 10), label=name + " max")
         ax1.plot([xpos(v) for v in vs], [pts[v]["mean_abs"] for v in vs], "s:", color=cmap(i % 10), label=name + " mean")
         ax2.plot([xpos(v) for v in vs], [max(pts[v]["coverage_diff"], 0.5) for v in vs], "o-", color=cmap(i % 10),
                  label=name)
-    ax1.axhline(1, color="red", lw=1, ls="--", label="budget: 1 LSB")
+    ax1.axhline(1, color="red", lw=1, ls="--", label="1 LSB")
     ax1.set_yscale("symlog", linthresh=1)
     ax1.set_xlabel(key)
     ax1.set_ylabel("|frame - reference| (LSB of 255)")
@@ -132,7 +137,7 @@ def plot_picture(doc, out_dir, key):
     if timed:
         fig, ax = plt.subplots(figsize=(7, 4.5))
         for i, inp in enumerate(inputs):
-            pts = sorted({(r["modeled_time_s"], r["image"]["mean_abs"], str(r["settings"][key]))
+            pts = sorted({(r["modeled_time_s"], r["image"]["mean_abs"], str(value(r)))
                           for r in timed if r["input"] == inp and r["level"] in ("rtl", "approx")})
             if not pts:
                 continue
@@ -159,8 +164,11 @@ def main():
     with open(os.path.join(out_dir, "accuracy.json")) as f:
         doc = json.load(f)
     made = [p for p in [plot_time_error(doc, out_dir)] if p]
-    for key in varied_keys(doc["rows"]):
-        made += plot_picture(doc, out_dir, key)
+    keys = varied_keys(doc["rows"])
+    if len(keys) == 1:
+        made += plot_picture(doc, out_dir, keys[0])
+    elif keys:  # several keys vary together: one point per combination
+        made += plot_picture(doc, out_dir, None)
     for p in made:
         print("  plot       %s" % p)
 

@@ -48,7 +48,7 @@ def triangle(rng, area):
     for x, y in p:
         x, y = round((x + dx) * 256) / 256, round((y + dy) * 256) / 256
         z, r, g, b = rng.random() * 65534, rng.random() * 255, rng.random() * 255, rng.random() * 255
-        fields.append("%.8g %.8g %.4f %.3f %.3f %.3f 1" % (x, y, z, r, g, b))
+        fields.append("%.8f %.8f %.4f %.3f %.3f %.3f 1" % (x, y, z, r, g, b))  # k/256: exact in 8 decimals
     return "tri " + "   ".join(fields)
 
 

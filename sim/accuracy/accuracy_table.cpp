@@ -42,7 +42,7 @@ json level_summary(const json& rows) {
   std::map<std::string, std::vector<const json*>> by_level;
   std::vector<std::string> order;
   for (const json& r : rows) {
-    if (r["time_error"].is_null()) continue;
+    if (r.value("time_error", json()).is_null()) continue;  // invalid rows have none
     const std::string level = r["level"];
     if (!by_level.count(level)) order.push_back(level);
     by_level[level].push_back(&r);
@@ -109,11 +109,13 @@ json rtl_agreement(const json& rows) {
     bool agrees = true;
     for (const json& r : rows)
       if (r["input"] == key.first && r["variant"] == key.second && r["level"] != "rtl" && r["level"] != "reference" &&
-          !r["image"].is_null()) {
+          r.value("complete", false) && r.contains("image_sha256")) {
         levels.push_back(r["level"]);
         agrees = agrees && r["image_sha256"] == sha;
       }
-    out.push_back({{"input", key.first}, {"variant", key.second}, {"compared", levels}, {"agrees", agrees}});
+    // nothing to compare with: no verdict
+    out.push_back({{"input", key.first}, {"variant", key.second}, {"compared", levels},
+                   {"agrees", levels.empty() ? json() : json(agrees)}});
   }
   return out;
 }
@@ -126,7 +128,7 @@ std::string accuracy_markdown(const json& rows, const json& levels, const json& 
       std::string against;
       for (const json& l : a["compared"]) against += (against.empty() ? "" : ", ") + l.get<std::string>();
       o << "| " << a["input"].get<std::string>() << " | " << a["variant"].get<std::string>() << " | " << against
-        << " | " << (a["agrees"].get<bool>() ? "yes" : "**NO**") << " |\n";
+        << " | " << (a["agrees"].is_null() ? "—" : a["agrees"].get<bool>() ? "yes" : "**NO**") << " |\n";
     }
     o << "\n";
   }
@@ -151,7 +153,7 @@ std::string accuracy_markdown(const json& rows, const json& levels, const json& 
   for (const json& r : rows) {
     if (r.contains("invalid")) {
       o << "| " << r["input"].get<std::string>() << " | " << r["level"].get<std::string>() << " | "
-        << r["variant"].get<std::string>() << " | invalid: " << r["invalid"].get<std::string>() << " |||||||||\n";
+        << r["variant"].get<std::string>() << " | invalid: " << r["invalid"].get<std::string>() << " |||||||||| \n";
       continue;
     }
     const json& im = r["image"];
@@ -168,9 +170,32 @@ std::string accuracy_markdown(const json& rows, const json& levels, const json& 
   return o.str();
 }
 
+std::string variants_markdown(const json& variants) {
+  std::ostringstream o;
+  o << "## Variants: what the formats cost and how far the EPs drift\n\n"
+       "EP error after N steps in one direction (claims/ep_precision.hpp; budget: 1 LSB, 0.125 px for D, plus half a "
+       "fraction LSB for the start value).\n\n"
+       "| variant | colour 1,024 / 2,048 LSB | T | Z | D px | register bits | adder bits |\n|---|---|---|---|---|---|---|\n";
+  for (const json& v : variants) {
+    if (v.contains("invalid")) {
+      o << "| " << v["variant"].get<std::string>() << " | invalid ||||||\n";
+      continue;
+    }
+    o << "| " << v["variant"].get<std::string>() << " | ";
+    for (const char* ep : {"color", "t", "z", "d"}) {
+      const json& e = v["ep_error"][ep];
+      const bool over = e["after_1024"].get<double>() > e["bound_1024"].get<double>();
+      o << (over ? "**" : "") << num(e["after_1024"], "%.3f") << (over ? "**" : "") << " / "
+        << num(e["after_2048"], "%.3f") << " (" << e["frac_bits"] << " bits) | ";
+    }
+    o << v["register_bits"] << " | " << v["adder_bits"] << " |\n";
+  }
+  return o.str();
+}
+
 std::string accuracy_csv(const json& rows) {
   static const char* kColumns[] = {"input", "level", "variant", "wall_s", "sim_pixels_per_s", "dda_clocks_per_s",
-                                   "modeled_time_s", "time_error"};
+                                   "modeled_time_s", "time_error", "time_ci_half_s"};
   static const char* kPicture[] = {"max_abs", "mean_abs", "rmse", "psnr_db", "coverage_diff", "z_max_abs"};
   std::ostringstream o;
   for (const char* c : kColumns) o << c << ",";
@@ -179,7 +204,11 @@ std::string accuracy_csv(const json& rows) {
   o << "invalid\n";
   auto field = [](const json& v) {
     if (v.is_null()) return std::string();
-    if (v.is_string()) return "\"" + v.get<std::string>() + "\"";
+    if (v.is_string()) {  // RFC 4180: quotes doubled
+      std::string q;
+      for (char c : v.get<std::string>()) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+      return "\"" + q + "\"";
+    }
     return v.dump();
   };
   for (const json& r : rows) {

@@ -26,6 +26,10 @@ nlohmann::json rtl_agreement(const nlohmann::json& rows);
 
 std::string accuracy_markdown(const nlohmann::json& rows, const nlohmann::json& levels, const nlohmann::json& counters,
                               const nlohmann::json& agreement);
+// The variants' formats: EP errors after 1,024 and 2,048 steps against the
+// budget, and the register and adder bits they cost.
+std::string variants_markdown(const nlohmann::json& variants);
+
 std::string accuracy_csv(const nlohmann::json& rows);
 
 }  // namespace girtd

@@ -8,8 +8,6 @@ namespace girtd {
 
 namespace {
 
-constexpr uint16_t kZClear = 65535;
-
 // Every triangle's edges and depth plane, and a grid of which triangles
 // touch which 32 x 32 block, to explain a pixel without a scan of all.
 class TriangleIndex {
@@ -65,16 +63,16 @@ class TriangleIndex {
 }  // namespace
 
 LlvmpipeComparison compare_with_llvmpipe(const std::vector<Triangle>& triangles, const RgbImage& a_rgb,
-                                         const std::vector<uint16_t>& a_z, const LlvmpipeFrame& b) {
+                                         const std::vector<uint16_t>& a_z, const LlvmpipeFrame& b, uint16_t z_clear) {
   LlvmpipeComparison c;
   c.image = compare_images(a_rgb, b.rgb);
-  c.depth = compare_depth(a_z, b.z, kZClear);
+  c.depth = compare_depth(a_z, b.z, z_clear);
   const TriangleIndex index(triangles, a_rgb.width, a_rgb.height);
   std::vector<double> depths;
   for (int y = 0; y < a_rgb.height; ++y)
     for (int x = 0; x < a_rgb.width; ++x) {
       const size_t i = size_t(y) * a_rgb.width + x;
-      const bool in_a = a_z[i] != kZClear, in_b = b.z[i] != kZClear;
+      const bool in_a = a_z[i] != z_clear, in_b = b.z[i] != z_clear;
       bool colour_off = false;
       if (in_a && in_b)
         for (int ch = 0; ch < 3; ++ch) colour_off = colour_off || std::abs(int(a_rgb.rgb[3 * i + ch]) - int(b.rgb.rgb[3 * i + ch])) > 1;

@@ -34,8 +34,8 @@ struct LlvmpipeComparison {
   }
 };
 
-// a: GIRTD's frame (its Z clear is 65535), b: llvmpipe's.
+// a: GIRTD's frame, b: llvmpipe's, both cleared to z_clear.
 LlvmpipeComparison compare_with_llvmpipe(const std::vector<Triangle>& triangles, const RgbImage& a_rgb,
-                                         const std::vector<uint16_t>& a_z, const LlvmpipeFrame& b);
+                                         const std::vector<uint16_t>& a_z, const LlvmpipeFrame& b, uint16_t z_clear);
 
 }  // namespace girtd

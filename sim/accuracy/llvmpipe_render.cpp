@@ -12,11 +12,12 @@ namespace girtd {
 
 namespace {
 
-constexpr double kDepthUnits = 65535.0;  // GIRTD's Z clear: GL's far plane
+constexpr double kDepthUnits = 65535.0;  // GIRTD's 16-bit Z: GL's 0..1
 
 }  // namespace
 
-LlvmpipeFrame render_llvmpipe(const std::vector<Triangle>& triangles, int width, int height, Rgb background) {
+LlvmpipeFrame render_llvmpipe(const std::vector<Triangle>& triangles, int width, int height, Rgb background,
+                              uint16_t z_clear) {
   // Single threaded, as the comparison with golden asks; read when the
   // context's screen is made.
   setenv("LP_NUM_THREADS", "0", 1);
@@ -39,7 +40,7 @@ LlvmpipeFrame render_llvmpipe(const std::vector<Triangle>& triangles, int width,
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glClearColor(background.r / 255.0f, background.g / 255.0f, background.b / 255.0f, 1.0f);
-  glClearDepth(1.0);
+  glClearDepth(z_clear / kDepthUnits);
   glFinish();
 
   // Vertex arrays, filled before the clock starts (the triangles in memory).

@@ -16,11 +16,14 @@ namespace girtd {
 
 struct LlvmpipeFrame {
   RgbImage rgb;              // GIRTD orientation (row 0 at the top)
-  std::vector<uint16_t> z;   // depth units, 65535 where nothing was drawn
+  std::vector<uint16_t> z;   // depth units, z_clear where nothing was drawn
   double draw_s = 0;         // clear to glFinish: the triangles in memory to the final buffers
 };
 
-// Throws std::runtime_error when OSMesa cannot make a context.
-LlvmpipeFrame render_llvmpipe(const std::vector<Triangle>& triangles, int width, int height, Rgb background);
+// Depth 0..65535 maps onto GL's 0..1; the buffer is cleared to z_clear
+// (config depth.clear). Throws std::runtime_error when OSMesa cannot make a
+// context.
+LlvmpipeFrame render_llvmpipe(const std::vector<Triangle>& triangles, int width, int height, Rgb background,
+                              uint16_t z_clear);
 
 }  // namespace girtd

@@ -1,13 +1,17 @@
 // Sampled timing (SMARTS-style) for the approx back end: the accuracy
-// command's cheaper estimator `approx_sampled_<rate>`. Of every k = 1/rate
-// triangles in the stream, the first is timed (measured), the last is
-// simulated without being measured (warm-up: it fills the FIFO and the
-// cache as the measured one will find them), and the others are skipped:
-// neither drawn nor simulated, the DDA taken for an estimate instead. The
-// estimate is a ratio estimator on the triangle's pixel box (the measured
-// ticks per box pixel), with its 99.7 % confidence interval (3 sigma).
-// A skipped triangle draws nothing, so the frame is incomplete: render
-// warns. Not a hardware option: no config key, no effect on golden or rtl.
+// command's cheaper estimator `approx_sampled_<rate>`. Of every k =
+// round(1/rate) triangles in the stream, the first is timed (measured), the
+// last is simulated without being measured (warm-up: the measured one finds
+// the FIFO and the cache page as a full run would), and the others are
+// skipped: neither drawn nor simulated, the DDA taken for an estimate
+// instead. Unlike SMARTS there is no functional warming: a skipped triangle
+// writes no Z, so measured ones see fewer Z rejections than in a full run
+// (one source of the error `girtd accuracy` measures). The estimate is a
+// ratio estimator on the triangle's pixel box (measured ticks per box
+// pixel), charged with the ratio as it stands; the 99.7 % interval (3 sigma)
+// is that of the final ratio. A skipped triangle draws nothing, so the frame
+// is incomplete: render warns. Not a hardware option: no config key, no
+// effect on golden or rtl.
 #pragma once
 
 #include <cmath>
@@ -19,7 +23,7 @@
 namespace girtd {
 
 struct SamplingStats {
-  double rate = 1;
+  double rate = 1;                // 1 / k: the fraction of triangles measured
   uint64_t measured = 0, warmed = 0, skipped = 0;  // triangles
   double skipped_ticks = 0;       // the estimate the skipped ones were charged
   double ci_half_ticks = 0;       // 99.7 % confidence half-width of that estimate
@@ -29,7 +33,7 @@ class TriangleSampler {
  public:
   enum class Role { kMeasure, kWarm, kSkip };
   explicit TriangleSampler(double rate) : period_(std::max<uint64_t>(1, uint64_t(std::llround(1 / rate)))) {
-    s_.rate = rate;
+    s_.rate = 1.0 / double(period_);  // the fraction actually measured
   }
   Role next() {
     const uint64_t phase = index_++ % period_;

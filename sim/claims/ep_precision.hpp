@@ -4,7 +4,8 @@
 // random triangles. The error of a plane after i steps in X and j in Y is
 // linear in (i, j), so over every pixel within N steps (|i| + |j| <= N) it
 // peaks at one of the four corners (+-N, 0), (0, +-N): those are evaluated,
-// with the adder's exact two's-complement sums. Unlike claims/ep_error.hpp
+// as sums of the raw register values (no wrap or saturation: the error of
+// the adds, not of the formats' range). Unlike claims/ep_error.hpp
 // (the DDA's own walk, pixel by pixel) this costs a few operations per
 // triangle, so every width can be tried.
 #pragma once
@@ -43,7 +44,8 @@ struct EpPrecision {
   double error_2048 = 0;
 };
 
-// Tries fraction widths from 1 to configured + 8 (int_bits unchanged).
+// Tries fraction widths from the fewest the configuration allows (1; D: the
+// Norm unit's nf.norm_frac_bits) to configured + 8, int_bits unchanged.
 EpPrecision ep_precision(const Params& p, EpKind ep);
 
 }  // namespace girtd

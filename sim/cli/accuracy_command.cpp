@@ -12,6 +12,7 @@
 #include "accuracy/accuracy_table.hpp"
 #include "accuracy/config_variants.hpp"
 #include "accuracy/llvmpipe_render.hpp"
+#include "claims/ep_precision.hpp"
 #include "cli/child_render.hpp"
 #include "cli/commands.hpp"
 #include "cli/output_set.hpp"
@@ -19,6 +20,7 @@
 #include "io/image_compare.hpp"
 #include "io/png_io.hpp"
 #include "io/subprocess.hpp"
+#include "io/input_reader.hpp"
 #include "io/trace_reader.hpp"
 #include "io/workload_list.hpp"
 
@@ -29,7 +31,6 @@ using json = nlohmann::json;
 namespace {
 
 constexpr const char* kDefaultInputs = "traces/accuracy_inputs.txt";
-constexpr uint16_t kZClear = 65535;
 
 struct Frame {
   RgbImage rgb;
@@ -45,7 +46,7 @@ Frame read_frame(const std::string& dir) {
 }
 
 // The llvmpipe yardstick applies to opaque, Q = 0, full-window triangle
-// traces; it draws the last frame.
+// traces; it draws the last frame. OSMesa failing is a warning, not the end.
 std::optional<Frame> llvmpipe_frame(const std::string& input, const Params& params) {
   if (!has_trace_header(input) || header_level(input) != TraceLevel::kTriangle) return std::nullopt;
   const Trace trace = read_trace(input, std::nullopt, params);
@@ -60,12 +61,18 @@ std::optional<Frame> llvmpipe_frame(const std::string& input, const Params& para
   }
   if (trace.frames.empty()) return std::nullopt;
   const TraceFrame& last = trace.frames.back();
-  LlvmpipeFrame l = render_llvmpipe(last.triangles, params.screen_width, params.screen_height, last.settings.background);
-  return Frame{std::move(l.rgb), std::move(l.z)};
+  try {
+    LlvmpipeFrame l = render_llvmpipe(last.triangles, params.screen_width, params.screen_height,
+                                      last.settings.background, static_cast<uint16_t>(params.depth_clear));
+    return Frame{std::move(l.rgb), std::move(l.z)};
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "warning: %s: no llvmpipe column: %s\n", input.c_str(), e.what());
+    return std::nullopt;
+  }
 }
 
-json picture_error(const Frame& a, const Frame& b) {
-  return picture_error_cell(compare_images(a.rgb, b.rgb), compare_depth(a.z, b.z, kZClear));
+json picture_error(const Frame& a, const Frame& b, uint16_t z_clear) {
+  return picture_error_cell(compare_images(a.rgb, b.rgb), compare_depth(a.z, b.z, z_clear));
 }
 
 json opt_number(const json& report, const char* key) {
@@ -89,10 +96,33 @@ json relative_differences(const json& counters, const json& rtl) {
       out[k] = nullptr;
       continue;
     }
+    // relative to rtl's; absolute where rtl's is 0
     const double r = v.get<double>(), x = counters[k].get<double>();
-    out[k] = r != 0 ? json((x - r) / r) : (x == 0 ? json(0.0) : json());
+    out[k] = (x - r) / (r != 0 ? std::abs(r) : 1.0);
   }
   return out;
+}
+
+// What a variant's formats cost and how far its EPs drift (the precision
+// sweep's columns): the thesis' error measure after 1,024 and 2,048 steps
+// (claims/ep_precision.hpp) and the bits of the EPs' registers (value,
+// d/dx, d/dy, AUX: four per EP) and adders.
+json variant_formats(const Params& p) {
+  json errors = json::object();
+  int register_bits = 0, adder_bits = 0;
+  for (EpKind ep : kEpKinds) {
+    Params q = p;
+    const FixFormat& f = ep_format(q, ep);
+    errors[ep_key(ep)] = {{"frac_bits", f.frac_bits},
+                          {"unit", ep_unit(ep)},
+                          {"after_1024", ep_error_after_steps(p, ep, 1024)},
+                          {"after_2048", ep_error_after_steps(p, ep, 2048)},
+                          {"bound_1024", ep_bound(ep, f.frac_bits)}};
+    const int count = ep == EpKind::kColor || ep == EpKind::kD ? 3 : 1;  // R, G, B; D1..D3
+    register_bits += 4 * count * f.total_bits();
+    adder_bits += count * f.total_bits();
+  }
+  return {{"ep_error", errors}, {"register_bits", register_bits}, {"adder_bits", adder_bits}};
 }
 
 std::string slug(const std::string& s) {
@@ -109,11 +139,14 @@ int run_accuracy(const AccuracyArgs& a) {
   for (const std::string& name : a.levels.empty() ? default_accuracy_levels() : a.levels)
     if (name != "reference") levels.push_back(accuracy_level(name));
   const std::vector<ConfigVariant> variants = config_variants(a.vary);
-  load_params(a.config);  // a bad --config is bad usage, before anything runs
+  // Bad usage and bad input are found before anything runs or is written.
+  const Params base_params = load_params(a.config);
+  for (const std::string& input : inputs) read_input(input, std::nullopt, base_params);
 
   const fs::path runs = fs::path(a.out_dir) / "runs";
   fs::create_directories(runs);
   json rows = json::array();
+  json variant_table = json::array();
   const size_t total = inputs.size() * variants.size() * levels.size();
   size_t done = 0;
   const auto t0 = std::chrono::steady_clock::now();
@@ -132,6 +165,10 @@ int run_accuracy(const AccuracyArgs& a) {
     } catch (const InputError& e) {
       invalid = e.formatted();
     }
+    json vt = {{"variant", variant.label}, {"settings", variant.settings}};
+    if (params) vt.update(variant_formats(*params));
+    else vt["invalid"] = *invalid;
+    variant_table.push_back(vt);
     for (const std::string& input : inputs) {
       const fs::path base = runs / slug(fs::path(input).filename().string()) / slug(variant.label);
       std::optional<Frame> reference, llvmpipe;
@@ -140,7 +177,11 @@ int run_accuracy(const AccuracyArgs& a) {
       json rtl_counters;
       const size_t first_row = rows.size();
       for (const AccuracyLevel& level : levels) {
-        json row = {{"input", input}, {"level", level.name}, {"variant", variant.label}, {"settings", variant.settings}};
+        json row = {{"input", input}, {"level", level.name}, {"variant", variant.label}, {"settings", variant.settings},
+                    {"complete", level.draws_frame}};
+        for (const char* key : {"wall_s", "sim_pixels_per_s", "dda_clocks_per_s", "modeled_time_s", "time_error",
+                                "image", "llvmpipe"})
+          row[key] = nullptr;  // every row has the contract's columns
         ++done;
         if (invalid) {
           row["invalid"] = *invalid;
@@ -161,20 +202,21 @@ int run_accuracy(const AccuracyArgs& a) {
         const double wall = report["wall_s"];
         const std::optional<double> modeled = level_modeled_time(level, report);
         row["wall_s"] = wall;
-        row["sim_pixels_per_s"] = wall > 0 ? json(report["pixels_generated"].get<double>() / wall) : json();
-        row["dda_clocks_per_s"] = wall > 0 && !report["dda_cycles"].is_null() ? json(report["dda_cycles"].get<double>() / wall) : json();
+        // Rates of the simulator over what it drew: a sampled run draws a part (null).
+        if (level.draws_frame && wall > 0) {
+          row["sim_pixels_per_s"] = report["pixels_generated"].get<double>() / wall;
+          if (!report["dda_cycles"].is_null()) row["dda_clocks_per_s"] = report["dda_cycles"].get<double>() / wall;
+        }
         row["modeled_time_s"] = modeled ? json(*modeled) : json();
-        row["time_error"] = nullptr;
         row["image_sha256"] = report["image_sha256"];
         if (!report["sampling"].is_null()) row["time_ci_half_s"] = report["sampling"]["ci_half_s"];
         row["counters"] = counters_of(report);
-        row["image"] = nullptr;
-        row["llvmpipe"] = nullptr;
         if (level.draws_frame) {
           const Frame frame = read_frame(dir);
+          const uint16_t z_clear = static_cast<uint16_t>(params->depth_clear);
           if (level.name == "reference") reference = frame;
-          if (reference) row["image"] = picture_error(frame, *reference);
-          if (llvmpipe) row["llvmpipe"] = picture_error(frame, *llvmpipe);
+          if (reference) row["image"] = picture_error(frame, *reference, z_clear);
+          if (llvmpipe) row["llvmpipe"] = picture_error(frame, *llvmpipe, z_clear);
         }
         if (level.name == "rtl" && modeled) {
           rtl_time = modeled;
@@ -194,7 +236,7 @@ int run_accuracy(const AccuracyArgs& a) {
         if (!row["modeled_time_s"].is_null())
           row["time_error"] = (row["modeled_time_s"].get<double>() - *rtl_time) / *rtl_time;
         // Counts of a complete run only: a sampled one counts its sample.
-        if (row["level"] != "rtl" && row["level"] != "reference" && !row["image"].is_null())
+        if (row["level"] != "rtl" && row["level"] != "reference" && row["complete"].get<bool>())
           row["counter_error"] = relative_differences(row["counters"], rtl_counters);
       }
     }
@@ -204,11 +246,12 @@ int run_accuracy(const AccuracyArgs& a) {
   const json counter_table = counter_summary(rows);
   const json agreement = rtl_agreement(rows);
   OutputSet files(a.out_dir);
-  files.add_text("accuracy.json", json{{"rows", rows}, {"levels", level_table}, {"counters", counter_table}, {"rtl_agreement", agreement},
+  files.add_text("accuracy.json", json{{"rows", rows}, {"levels", level_table}, {"counters", counter_table}, {"rtl_agreement", agreement}, {"variants", variant_table},
                                        {"inputs", inputs}, {"config", a.config}}
                                       .dump(2) + "\n");
   files.add_text("accuracy.csv", accuracy_csv(rows));
-  const std::string md = accuracy_markdown(rows, level_table, counter_table, agreement);
+  const std::string md = accuracy_markdown(rows, level_table, counter_table, agreement) + "\n" +
+                         variants_markdown(variant_table);
   files.add_text("accuracy.md", "# girtd accuracy\n\n" + md);
   files.commit();
   std::fputs(md.c_str(), stdout);
@@ -223,7 +266,7 @@ int run_accuracy(const AccuracyArgs& a) {
   }
   int failed = 0;
   for (const json& r : rows) failed += r.contains("invalid") && r["invalid"].get<std::string>().rfind("the render failed", 0) == 0;
-  for (const json& a : agreement) failed += !a["agrees"].get<bool>();
+  for (const json& a : agreement) failed += a["agrees"] == false;
   if (failed) std::printf("%d failure(s): renders that failed, or pictures that differ from rtl's\n", failed);
   return failed ? 1 : 0;
 }

@@ -102,7 +102,10 @@ void precision_rows(const Params& p, std::vector<ClaimRow>& rows) {
                     fmt(ep == EpKind::kD ? "<= %.3f px over 1024 steps" : "<= %.0f LSB over 1024 steps", ep_budget(ep)) +
                         (ep == EpKind::kZ ? " (no budget stated for Z: 1 LSB of its 16-bit output assumed)" : "") +
                         " (+ half a fraction LSB: the start value's rounding)",
-                    fmt("fewest keeping it: %.0f bits over 1,024 steps, %.0f over 2,048; ", r.fewest_1024, r.fewest_2048) +
+                    (r.fewest_2048 < 0 ? fmt("fewest keeping it: %.0f bits over 1,024 steps, none up to %.0f over 2,048; ",
+                                             r.fewest_1024, r.configured + 8)
+                                       : fmt("fewest keeping it: %.0f bits over 1,024 steps, %.0f over 2,048; ",
+                                             r.fewest_1024, r.fewest_2048)) +
                         fmt("with %.0f: ", r.configured) + fmt("%.3f ", r.error_1024) + unit +
                         fmt(" (1,024), %.3f ", r.error_2048) + unit + " (2,048); 2,000 random triangles",
                     verdict});

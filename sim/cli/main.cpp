@@ -48,9 +48,9 @@ int main(int argc, char** argv) {
                    "compute everything, even what no output depends on (the same outputs; report.json's left_out "
                    "lists what a pruned run skipped)");
   render->add_option("--sample-timing", ra.sample_timing,
-                     "approx: time 1 triangle in 1/RATE and skip the rest (a timing estimate with a confidence "
-                     "interval, report.json's `sampling`; the frame is incomplete). The accuracy command's "
-                     "approx_sampled_<RATE> level");
+                     "approx: of every round(1/RATE) triangles, time one, simulate the one before it as warm-up "
+                     "and skip the rest (a timing estimate with a confidence interval, report.json's `sampling`; "
+                     "the frame is incomplete). The accuracy command's approx_sampled_<RATE> level");
 
   ConfigFiles claims_config;
   CLI::App* claims = app.add_subcommand("claims", "the thesis' claims (GIRTD.md §9) against measurements");

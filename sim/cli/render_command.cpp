@@ -21,6 +21,7 @@
 #include "backends/front_end_runner.hpp"
 #include "io/model_import.hpp"
 #include "io/scene_reader.hpp"
+#include "io/input_reader.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -55,22 +56,12 @@ struct LoadedInput {
 // `untimed`: golden and reference draw triangles, so the front end runs here;
 // the timed back ends run it as their own stages.
 LoadedInput load_input(const RenderArgs& a, const Params& params, bool untimed) {
-  if (!fs::exists(a.input)) throw InputError(a.input, 0, "no such file");
   std::optional<TraceLevel> level;
   if (!a.level.empty()) level = parse_level(a.level, "--level", 0);
   LoadedInput in;
-  if (!level && !has_trace_header(a.input)) {
-    std::string ext = fs::path(a.input).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == ".json") in.polygons = read_scene(a.input, params);
-    else if (is_model_file(a.input)) in.polygons = scene_from_model(a.input, params);
-    else reject_other_model_formats(a.input);
-  }
-  if (!in.polygons) {
-    Trace t = read_trace(a.input, level, params);
-    if (t.level == TraceLevel::kPolygon) in.polygons = std::move(t);
-    else in.trace = std::move(t);
-  }
+  Trace t = read_input(a.input, level, params);
+  if (t.level == TraceLevel::kPolygon) in.polygons = std::move(t);
+  else in.trace = std::move(t);
   in.prune = plan_pruning(in.polygons ? *in.polygons : in.trace, !a.no_prune);
   if (in.polygons && untimed) {
     FrontEndRun run = run_front_end(*in.polygons, params, in.prune);

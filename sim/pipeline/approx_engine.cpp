@@ -40,7 +40,8 @@ class ApproxEngine : public BackendEngine {
         sampler_->warmed();
         break;
       case TriangleSampler::Role::kSkip:
-        timing_.skip_triangle(sampler_->skip(d));
+        // in whole DDA clocks, as a measured triangle takes
+        timing_.skip_triangle((sampler_->skip(d) + period_ticks_ / 2) / period_ticks_ * period_ticks_);
         break;
     }
   }
