@@ -108,20 +108,21 @@ def plot_picture(doc, out_dir, key):
                 pts[value(r)] = r["image"]
         vs = [v for v in values if v in pts]
         name = os.path.basename(inp)
-        ax1.plot([xpos(v) for v in vs], [pts[v]["max_abs"] for v in vs], "o-", color=cmap(i % 10), label=name + " max")
-        ax1.plot([xpos(v) for v in vs], [pts[v]["mean_abs"] for v in vs], "s:", color=cmap(i % 10), label=name + " mean")
+        ax1.plot([xpos(v) for v in vs], [max(pts[v]["max_abs"], 1e-3) for v in vs], "o-", color=cmap(i % 10),
+                 label=name)
+        ax1.plot([xpos(v) for v in vs], [max(pts[v]["mean_abs"], 1e-3) for v in vs], "s:", color=cmap(i % 10))
         ax2.plot([xpos(v) for v in vs], [max(pts[v]["coverage_diff"], 0.5) for v in vs], "o-", color=cmap(i % 10),
                  label=name)
     ax1.axhline(1, color="red", lw=1, ls="--", label="1 LSB")
-    ax1.set_yscale("symlog", linthresh=1)
+    ax1.set_yscale("log")
     ax1.set_xlabel(key)
     ax1.set_ylabel("|frame - reference| (LSB of 255)")
-    ax1.set_title("Colour error against the reference")
-    ax1.legend(fontsize=6)
+    ax1.set_title("Colour error: max (solid), mean (dotted)")
+    ax1.legend(fontsize=6, loc="center right")
     ax2.set_yscale("log")
     ax2.set_xlabel(key)
     ax2.set_ylabel("pixels covered differently")
-    ax2.set_title("Coverage against the reference")
+    ax2.set_title("Coverage against the reference (0 drawn at 0.5)")
     for ax in (ax1, ax2):
         ax.grid(True, alpha=0.3)
         if not numeric:

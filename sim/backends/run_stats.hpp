@@ -40,6 +40,9 @@ inline StageStats untimed_stage(const std::string& name, uint64_t items) {
 // Whole-pipeline timing (the approx and rtl back ends).
 struct PipelineTiming {
   double modeled_s = 0;
+  // Frames 2..N: their pixels over the time from frame 1's swap to frame
+  // N's (the thesis' rate is sustained, the pipeline full); none for one frame.
+  std::optional<double> sustained_pixels_per_s;
   std::string bottleneck;           // the stage with the most busy time
   uint64_t cache_accesses = 0, page_misses = 0;
   double dda_busy_s = 0;            // DDA clocks on triangles

@@ -246,7 +246,16 @@ int run_accuracy(const AccuracyArgs& a) {
   const json counter_table = counter_summary(rows);
   const json agreement = rtl_agreement(rows);
   OutputSet files(a.out_dir);
-  files.add_text("accuracy.json", json{{"rows", rows}, {"levels", level_table}, {"counters", counter_table}, {"rtl_agreement", agreement}, {"variants", variant_table},
+  std::string command = "girtd accuracy";  // what regenerates this run (the README quotes it)
+  for (const std::string& i : a.inputs) command += " " + i;
+  if (!a.levels.empty()) {
+    command += " --backends ";
+    for (size_t i = 0; i < a.levels.size(); ++i) command += (i ? "," : "") + a.levels[i];
+  }
+  for (const std::string& v : a.vary) command += " --vary " + v;
+  for (const std::string& c : a.config) command += " --config " + c;
+  command += " --out " + a.out_dir;
+  files.add_text("accuracy.json", json{{"command", command}, {"rows", rows}, {"levels", level_table}, {"counters", counter_table}, {"rtl_agreement", agreement}, {"variants", variant_table},
                                        {"inputs", inputs}, {"config", a.config}}
                                       .dump(2) + "\n");
   files.add_text("accuracy.csv", accuracy_csv(rows));

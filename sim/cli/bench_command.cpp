@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "accuracy/accuracy_table.hpp"
 #include "backends/render_session.hpp"
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
@@ -74,17 +75,19 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
       "|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string& path : sample_traces_at({TraceLevel::kTriangle})) {
     const Trace trace = read_trace(path, std::nullopt, params);
-    RgbImage reference;
+    RenderOutput reference;
     for (const std::string name : {"reference", "golden"}) {
       auto backend = make_backend(name, params);
       const RenderOutput out = render_trace(trace, *backend, params, {});
-      if (name == "reference") reference = out.shown;
-      const ImageError err = compare_images(out.shown, reference);
+      if (name == "reference") reference = out;
+      // The accuracy command's picture error (accuracy/accuracy_table.hpp).
+      const ImageError err = compare_images(out.shown, reference.shown);
+      const DepthError derr = compare_depth(out.z, reference.z, static_cast<uint16_t>(params.depth_clear));
       const double rate = out.stats.wall_s > 0 ? double(out.stats.pixels_generated) / out.stats.wall_s / 1e6 : 0;
       rows.push_back({{"trace", path}, {"backend", name}, {"triangles", out.stats.triangles_in},
                       {"pixels_generated", out.stats.pixels_generated}, {"wall_s", out.stats.wall_s},
                       {"sim_mpixels_per_s", rate}, {"mean_abs_error", err.mean_abs}, {"max_abs_error", err.max_abs},
-                      {"differing_fraction", err.differing_fraction}});
+                      {"differing_fraction", err.differing_fraction}, {"image", picture_error_cell(err, derr)}});
       char line[512];
       std::snprintf(line, sizeof line, "| %s | %s | %llu | %llu | %.3f | %.2f | %.4f | %d | %.4f %% |\n",
                     fs::path(path).filename().c_str(), name.c_str(),
@@ -142,7 +145,8 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
                                               {"config", params.source}}
                                        .dump(2) +
                                    "\n");
-  files.add_text("bench.md", "# girtd bench\n\nError is against the reference back end's frame (0..255 per channel).\n\n" + md);
+  files.add_text("bench.md", "# girtd bench\n\nError is against the reference back end's frame (0..255 per channel; "
+                            "bench.json's `image` cells as `girtd accuracy` writes them).\n\n" + md);
   files.commit();
   std::printf("wrote %s and %s\n", files.path("bench.json").c_str(), files.path("bench.md").c_str());
   if (pb.failures) std::printf("%d failure(s) in the pipeline table (see above)\n", pb.failures);

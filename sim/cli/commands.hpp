@@ -25,7 +25,8 @@ struct RenderArgs {
   bool z_png = false;
   bool quiet = false;
   bool no_prune = false;
-  std::optional<double> sample_timing;  // approx: sampled timing (the accuracy command's estimator)
+  std::optional<double> sample_timing;
+  int repeat = 1;  // a one-frame input drawn this many times (sustained rates)  // approx: sampled timing (the accuracy command's estimator)
 };
 
 int run_render(const RenderArgs& a);

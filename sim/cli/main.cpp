@@ -47,6 +47,10 @@ int main(int argc, char** argv) {
   render->add_flag("--no-prune", ra.no_prune,
                    "compute everything, even what no output depends on (the same outputs; report.json's left_out "
                    "lists what a pruned run skipped)");
+  render->add_option("--repeat", ra.repeat,
+                     "draw a one-frame input N times as N frames; the timed back ends then judge the sustained rate "
+                     "(frames 2..N, report.json's sustained_mpixels_per_s)")
+      ->check(CLI::Range(1, 100000));
   render->add_option("--sample-timing", ra.sample_timing,
                      "approx: of every round(1/RATE) triangles, time one, simulate the one before it as warm-up "
                      "and skip the rest (a timing estimate with a confidence interval, report.json's `sampling`; "

@@ -3,6 +3,7 @@
 #include <png.h>
 
 #include <cstring>
+#include <string>
 
 #include "common/input_error.hpp"
 
@@ -13,6 +14,25 @@ void write_image(const std::string& path, png_image& image, const void* data, in
   if (!png_image_write_to_file(&image, path.c_str(), 0, data, row_stride, nullptr))
     throw InputError(path, 0, std::string("cannot write PNG: ") + image.message);
 }
+
+// Opens `path` for reading as `format`; finish() decodes into `out`.
+struct PngReader {
+  png_image image;
+  std::string path;
+  PngReader(const std::string& p, uint32_t format) : path(p) {
+    std::memset(&image, 0, sizeof image);
+    image.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&image, path.c_str()))
+      throw InputError(path, 0, std::string("cannot read PNG: ") + image.message);
+    image.format = format;
+  }
+  void finish(void* out) {
+    if (!png_image_finish_read(&image, nullptr, out, 0, nullptr)) {
+      png_image_free(&image);
+      throw InputError(path, 0, std::string("cannot decode PNG: ") + image.message);
+    }
+  }
+};
 
 }  // namespace
 
@@ -37,37 +57,21 @@ void write_png_gray16(const std::string& path, int width, int height, const std:
 }
 
 RgbImage read_png_rgb(const std::string& path) {
-  png_image image;
-  std::memset(&image, 0, sizeof image);
-  image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&image, path.c_str()))
-    throw InputError(path, 0, std::string("cannot read PNG: ") + image.message);
-  image.format = PNG_FORMAT_RGB;
+  PngReader r(path, PNG_FORMAT_RGB);
   RgbImage out;
-  out.width = static_cast<int>(image.width);
-  out.height = static_cast<int>(image.height);
-  out.rgb.resize(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, out.rgb.data(), 0, nullptr)) {
-    png_image_free(&image);
-    throw InputError(path, 0, std::string("cannot decode PNG: ") + image.message);
-  }
+  out.width = static_cast<int>(r.image.width);
+  out.height = static_cast<int>(r.image.height);
+  out.rgb.resize(PNG_IMAGE_SIZE(r.image));
+  r.finish(out.rgb.data());
   return out;
 }
 
 std::vector<uint16_t> read_png_gray16(const std::string& path, int& width, int& height) {
-  png_image image;
-  std::memset(&image, 0, sizeof image);
-  image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&image, path.c_str()))
-    throw InputError(path, 0, std::string("cannot read PNG: ") + image.message);
-  image.format = PNG_FORMAT_LINEAR_Y;
-  width = static_cast<int>(image.width);
-  height = static_cast<int>(image.height);
+  PngReader r(path, PNG_FORMAT_LINEAR_Y);
+  width = static_cast<int>(r.image.width);
+  height = static_cast<int>(r.image.height);
   std::vector<uint16_t> out(size_t(width) * height);
-  if (!png_image_finish_read(&image, nullptr, out.data(), 0, nullptr)) {
-    png_image_free(&image);
-    throw InputError(path, 0, std::string("cannot decode PNG: ") + image.message);
-  }
+  r.finish(out.data());
   return out;
 }
 

@@ -119,6 +119,8 @@ void BackendStage::run() {
         break;
       case TokenKind::kFrameEnd:
         frame_work([&] { engine_.end_frame(); });
+        frame_end_ticks_.push_back(engine_.now_tick());
+        frame_end_pixels_.push_back(engine_.result().pixels_generated);
         if (frame_done_) frame_done_(tok.frame);
         break;
       case TokenKind::kEnd:

@@ -45,6 +45,9 @@ class BackendStage : public sc_core::sc_module {
   // Ticks spent clearing frames and, at their ends, writing the cache back
   // and swapping (not drawing).
   uint64_t frame_ticks() const { return frame_ticks_; }
+  // Per frame: the tick its swap ended, and the pixels generated up to then.
+  const std::vector<uint64_t>& frame_end_ticks() const { return frame_end_ticks_; }
+  const std::vector<uint64_t>& frame_end_pixels() const { return frame_end_pixels_; }
 
  private:
   void run();
@@ -69,6 +72,7 @@ class BackendStage : public sc_core::sc_module {
   bool finished_ = false;
   uint64_t end_tick_ = 0;
   uint64_t frame_ticks_ = 0;
+  std::vector<uint64_t> frame_end_ticks_, frame_end_pixels_;
 };
 
 }  // namespace girtd

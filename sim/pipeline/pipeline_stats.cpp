@@ -64,6 +64,10 @@ void PipelineElaboration::collect(RunStats& s) const {
 
   PipelineTiming t;
   t.modeled_s = modeled;
+  const auto& ends = back_end_->frame_end_ticks();
+  const auto& px = back_end_->frame_end_pixels();
+  if (ends.size() >= 2 && ends.back() > ends.front())
+    t.sustained_pixels_per_s = double(px.back() - px.front()) / (double(ends.back() - ends.front()) * tick_s);
   double most = -1;
   for (const StageStats& st : s.stages)
     if (st.busy_s && *st.busy_s > most) {

@@ -49,6 +49,12 @@ json numerics_json(const ReportSource& r) {
 const PipelineTiming& timing(const ReportSource& r) { return *r.s.timing; }
 double pixels(const ReportSource& r) { return double(r.s.pixels_generated); }
 double modeled_mpixels(const ReportSource& r) { return per_s(pixels(r), timing(r).modeled_s) / 1e6; }
+std::optional<double> sustained_mpixels(const ReportSource& r) {
+  const auto& s = timing(r).sustained_pixels_per_s;
+  return s ? std::optional<double>(*s / 1e6) : std::nullopt;
+}
+// What target_met and the PASS / FAIL line judge.
+double judged_mpixels(const ReportSource& r) { return sustained_mpixels(r).value_or(modeled_mpixels(r)); }
 
 // A front-end count: null when the input entered below the front end.
 ReportKey frontend_key(const std::string& leaf, std::string meaning, uint64_t FrontendCounts::*field) {
@@ -136,10 +142,15 @@ std::vector<ReportKey> make_keys() {
           [](auto& r) { return json(modeled_mpixels(r)); }, true),
       key("target_mpixels_per_s", "Mpixel/s", "the thesis' 20", kEvery,
           [](auto& r) { return json(r.params.target_mpixels_per_s); }, true),
-      key("target_met", "bool", "`modeled_mpixels_per_s` >= the target (report.md: PASS / FAIL line)", kTimed,
-          [](auto& r) {
-            return json(modeled_mpixels(r) >= r.params.target_mpixels_per_s);
-          }),
+      key("sustained_mpixels_per_s", "Mpixel/s",
+          "the pixels of frames 2..N over the modeled time from frame 1's swap to frame N's: the rate with the "
+          "pipeline full, as the thesis' 20 Mpixel/s is meant (`render --repeat N` draws a static input N times); "
+          "null for one frame",
+          kTimed, [](auto& r) { return sustained_mpixels(r) ? json(*sustained_mpixels(r)) : json(); }, true),
+      key("target_met", "bool",
+          "the judged rate >= the target: `sustained_mpixels_per_s` when not null, else `modeled_mpixels_per_s` "
+          "(report.md: PASS / FAIL line)",
+          kTimed, [](auto& r) { return json(judged_mpixels(r) >= r.params.target_mpixels_per_s); }),
       key("back_end_mpixels_per_s", "Mpixel/s",
           "generated pixels over the modeled time less `time_split.dda_starved_s`: the rate with the DDA always fed",
           kTimed, [](auto& r) { return json(per_s(pixels(r), timing(r).modeled_s - timing(r).dda_starved_s) / 1e6); }),

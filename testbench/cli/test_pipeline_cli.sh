@@ -98,4 +98,24 @@ for cfg in vram230 noclear; do
     && ok || bad "$cfg: approx's time differs from rtl's"
 done
 
+# render --repeat N: a static input as N frames, judged by the sustained rate
+# (frames 2..N, the pipeline full). The first frame pays for filling the
+# pipeline and its clear is not overlapped, so sustained >= the rate over all
+# frames; approx and rtl agree on it; one frame has none; an animation is
+# refused (it is not static).
+for b in approx rtl; do
+  "$GIRTD" render traces/scenes/window.json --backend $b --repeat 3 --out "$TMP/rep-$b" --quiet     && ok || bad "--repeat 3 on $b"
+done
+R=$TMP/rep-approx/report.json
+jq -e '.frames == 3 and .sustained_mpixels_per_s >= .modeled_mpixels_per_s
+       and .target_met == (.sustained_mpixels_per_s >= .target_mpixels_per_s)' "$R" >/dev/null   && ok || bad "sustained: $(jq -c '[.frames, .sustained_mpixels_per_s, .modeled_mpixels_per_s, .target_met]' "$R")"
+[[ "$(jq .sustained_mpixels_per_s "$R")" == "$(jq .sustained_mpixels_per_s "$TMP/rep-rtl/report.json")" ]] \
+  && ok || bad "approx and rtl sustain different rates"
+grep -qE "^(PASS|FAIL): sustained .* Mpixel/s against the 20 Mpixel/s target" "$TMP/rep-approx/report.md" \
+  && ok || bad "report.md does not judge the sustained rate"
+jq -e '.sustained_mpixels_per_s == null' "$TMP/win2/report.json" >/dev/null && ok || bad "one frame has a sustained rate"
+"$GIRTD" render traces/scenes/animation.json --backend approx --repeat 2 --out "$TMP/rep-anim" --quiet 2> "$TMP/err"
+[[ $? -eq 2 ]] && grep -q "^--repeat: traces/scenes/animation.json has [0-9]* frames" "$TMP/err" \
+  && ok || bad "--repeat on an animation: $(cat "$TMP/err")"
+
 finish
