@@ -11,9 +11,10 @@
 
 namespace girtd {
 
-// `log`: the child's stdout and stderr go there ("" keeps ours).
+// `log`: the child's stdout and stderr go there ("" keeps ours);
+// `exit_code`: the child's (-1: killed by a signal, or not started).
 nlohmann::json render_in_child(const std::string& input, const std::string& backend, const std::string& dir,
                                const ConfigFiles& config, const std::vector<std::string>& extra = {},
-                               const std::string& log = "");
+                               const std::string& log = "", int* exit_code = nullptr);
 
 }  // namespace girtd

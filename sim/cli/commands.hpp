@@ -67,4 +67,14 @@ struct AccuracyArgs {
 
 int run_accuracy(const AccuracyArgs& a);
 
+struct SweepArgs {
+  std::string spec;
+  int jobs = 0;          // 0: every core
+  std::string out_dir;   // default out/sweep/<spec name>
+  bool slurm = false;    // the rows as a Slurm job array
+  std::string slice;     // "I/S": only rows I, I + S, ... (a Slurm array task); no tables
+};
+
+int run_sweep(const SweepArgs& a);
+
 }  // namespace girtd

@@ -118,6 +118,16 @@ int main(int argc, char** argv) {
   accuracy->add_option("--config", ac.config, kConfigHelp)->allow_extra_args(false);
   accuracy->add_option("--out", ac.out_dir, "output directory")->capture_default_str();
 
+  SweepArgs sw;
+  CLI::App* sweep = app.add_subcommand("sweep", "a design-space sweep: every combination of the spec's axes on its inputs");
+  sweep->add_option("spec", sw.spec, "SPEC.json (CONTRACT.md; traces/sweeps/)")->required()->check(CLI::ExistingFile);
+  sweep->add_option("--jobs", sw.jobs, "renders at once (default: every core); with --slurm, array tasks (default 64)")
+      ->check(CLI::PositiveNumber);
+  sweep->add_option("--out", sw.out_dir, "output directory (default out/sweep/<spec name>; a rerun resumes there)");
+  sweep->add_flag("--slurm", sw.slurm, "run the rows as a Slurm job array (sbatch --array --wait), then gather");
+  sweep->add_option("--slice", sw.slice, "I/S: run rows I, I + S, ... only, and no tables (what each Slurm task runs)")
+      ->group("");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -146,6 +156,7 @@ int main(int argc, char** argv) {
     if (*regress) return run_regress(rg);
     if (*stress) return run_stress(st);
     if (*accuracy) return run_accuracy(ac);
+    if (*sweep) return run_sweep(sw);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.formatted().c_str());
     return 2;

@@ -12,7 +12,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 BUILD="${1:-$ROOT/build}"
 shift || true
 TARGETS=("$@")
-((${#TARGETS[@]})) || TARGETS=(trace scene config obj off ply stl)
+((${#TARGETS[@]})) || TARGETS=(trace scene config sweep_spec obj off ply stl)
 RUNS="${RUNS:-1000000}"
 # assimp's own leaks on refused input are suppressed here, not in the replays
 # (campaign_lsan.supp says why); "suppressed" in the output counts them.
@@ -21,13 +21,14 @@ SECONDS_PER_TARGET="${SECONDS_PER_TARGET:-600}"
 
 # Model imports run at ~70 executions/s on 10-30 KB inputs (assimp builds
 # every importer per import): shorter inputs buy more executions.
-max_len() { case "$1" in trace | scene | config) echo 65536 ;; *) echo 8192 ;; esac; }
+max_len() { case "$1" in trace | scene | config | sweep_spec) echo 65536 ;; *) echo 8192 ;; esac; }
 
 seeds() {
   case "$1" in
     trace) echo "$ROOT/traces" ;;
     scene) echo "$ROOT/traces/scenes" ;;
     config) echo "$ROOT/config" ;;
+    sweep_spec) echo "$ROOT/traces/sweeps" ;;
     *) echo "$ROOT/traces/models" ;;
   esac
 }

@@ -1,0 +1,277 @@
+// girtd sweep: a design-space sweep (CONTRACT.md). Every point x input is a
+// `girtd render` in its own process, run by a pool of local workers (or, with
+// --slurm, a Slurm job array running `girtd sweep --task`); each row is kept
+// in DIR/rows/ as it completes, so a rerun skips what is there and a killed
+// sweep resumes. Then K points chosen from the spec's hash are rerun on rtl
+// and the tables and plots are written.
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <random>
+#include <thread>
+
+#include "cli/child_render.hpp"
+#include "cli/commands.hpp"
+#include "cli/output_set.hpp"
+#include "common/file_text.hpp"
+#include "common/input_error.hpp"
+#include "io/input_reader.hpp"
+#include "io/sha256.hpp"
+#include "io/subprocess.hpp"
+#include "sweep/sweep_points.hpp"
+#include "sweep/sweep_spec.hpp"
+#include "sweep/sweep_table.hpp"
+
+namespace girtd {
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+struct Task {
+  const SweepPoint* point;
+  std::string input;
+  std::string id;  // point-input
+  bool repeat;     // a one-frame input, drawn spec.repeat times
+};
+
+std::string input_tag(const std::string& input) {
+  return sha256_hex(std::vector<uint8_t>(input.begin(), input.end())).substr(0, 8);
+}
+
+json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return json::parse(in);
+}
+
+void write_json_atomically(const fs::path& p, const json& j) {
+  const fs::path tmp = p.string() + ".tmp" + std::to_string(getpid());
+  std::ofstream(tmp) << j.dump(2) << "\n";
+  fs::rename(tmp, p);
+}
+
+json base_row(const Task& t) {
+  json row = {{"point", t.point->id}, {"input", t.input}, {"valid", t.point->invalid.empty()}};
+  for (const auto& [axis, v] : t.point->axis_values.items()) row[axis] = v;
+  for (const char* k : {"modeled_mpixels_per_s", "sustained_mpixels_per_s", "modeled_time_s", "target_met", "bottleneck",
+                        "image_sha256", "wall_s", "rtl_agrees"})
+    row[k] = nullptr;
+  if (!t.point->cost.is_null()) row.update(t.point->cost);
+  if (!t.point->invalid.empty()) row["invalid"] = t.point->invalid;
+  return row;
+}
+
+// One row: the point's render of the input; none when the render was
+// killed (the sweep is being stopped: the row is left for the rerun).
+std::optional<json> run_task(const Task& t, const SweepSpec& spec, const fs::path& dir) {
+  json row = base_row(t);
+  if (!t.point->invalid.empty()) return row;
+  const fs::path run = dir / "runs" / t.id;
+  ConfigFiles config = spec.base;
+  config.push_back(t.point->config_file);
+  std::vector<std::string> extra;
+  if (t.repeat) extra = {"--repeat", std::to_string(spec.repeat)};
+  int rc = 0;
+  const json r = render_in_child(t.input, spec.backend, run.string(), config, extra, run.string() + ".log", &rc);
+  if (rc < 0) return std::nullopt;
+  if (r.is_null()) {
+    row["valid"] = false;
+    row["invalid"] = "the render failed: " + run.string() + ".log";
+    return row;
+  }
+  for (const char* k : {"modeled_mpixels_per_s", "sustained_mpixels_per_s", "modeled_time_s", "target_met", "bottleneck",
+                        "image_sha256", "wall_s"})
+    row[k] = r[k];
+  fs::remove_all(run);  // the frame is not kept: its SHA is
+  fs::remove(run.string() + ".log");
+  return row;
+}
+
+class Progress {
+ public:
+  Progress(size_t total, size_t done) : total_(total), done_(done), start_done_(done), tty_(isatty(STDERR_FILENO)) {}
+  void step() {
+    std::lock_guard<std::mutex> lock(m_);
+    ++done_;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    const double eta = elapsed / double(done_ - start_done_) * double(total_ - done_);
+    const int width = 30, filled = int(width * done_ / std::max<size_t>(total_, 1));
+    if (tty_ || done_ == total_ || done_ * 20 / total_ != (done_ - 1) * 20 / total_)
+      std::fprintf(stderr, "%s[sweep] [%s%s] %zu/%zu rows, %.0f s, ETA %.0f s%s", tty_ ? "\r" : "",
+                   std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), done_, total_, elapsed,
+                   eta, tty_ && done_ < total_ ? "" : "\n");
+  }
+
+ private:
+  std::mutex m_;
+  size_t total_, done_, start_done_;
+  bool tty_;
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
+
+// The points spot-checked on rtl: K of the valid ones, drawn by a generator
+// seeded from the spec's hash (the same on every machine and under Slurm).
+std::vector<const SweepPoint*> spot_check_points(const SweepSpec& spec, const std::vector<SweepPoint>& points) {
+  const std::string text = read_file_text(spec.path).value_or("");
+  const std::string spec_sha = sha256_hex(std::vector<uint8_t>(text.begin(), text.end()));
+  std::vector<const SweepPoint*> valid;
+  for (const SweepPoint& p : points)
+    if (p.invalid.empty()) valid.push_back(&p);
+  std::sort(valid.begin(), valid.end(), [](auto* a, auto* b) { return a->id < b->id; });
+  valid.erase(std::unique(valid.begin(), valid.end(), [](auto* a, auto* b) { return a->id == b->id; }), valid.end());
+  std::mt19937_64 rng(std::stoull(spec_sha.substr(0, 16), nullptr, 16));
+  std::shuffle(valid.begin(), valid.end(), rng);
+  if (valid.size() > size_t(spec.spot_check)) valid.resize(size_t(spec.spot_check));
+  return valid;
+}
+
+// rtl agrees: the same picture and modeled time within 0.1 %.
+json spot_check(const Task& t, const json& row, const SweepSpec& spec, const fs::path& dir) {
+  const fs::path run = dir / "runs" / (t.id + "-rtl");
+  ConfigFiles config = spec.base;
+  config.push_back(t.point->config_file);
+  std::vector<std::string> extra;
+  if (t.repeat) extra = {"--repeat", std::to_string(spec.repeat)};
+  const json r = render_in_child(t.input, "rtl", run.string(), config, extra, run.string() + ".log");
+  if (r.is_null()) return false;
+  const double a = row["modeled_time_s"], b = r["modeled_time_s"];
+  const bool agrees = r["image_sha256"] == row["image_sha256"] && std::abs(a - b) <= 1e-3 * b;
+  fs::remove_all(run);
+  return agrees;
+}
+
+bool slurm_available() { return run_process({"sinfo", "--noheader"}, true) == 0; }
+
+// One array task per slice, each `girtd sweep SPEC --out DIR --slice I/S`
+// with one job (a task is one core); sbatch --wait returns when all ended.
+int run_slurm_array(const SweepArgs& a, const std::string& out, size_t rows) {
+  const size_t slices = std::min<size_t>(rows, a.jobs > 0 ? size_t(a.jobs) : 64);
+  const std::string logs = out + "/slurm";
+  fs::create_directories(logs);
+  const std::string self = self_executable();
+  // The spec and folder as given, run from this folder (--chdir): the rows
+  // name their inputs as a local run does.
+  const std::string wrap = "exec '" + self + "' sweep '" + a.spec + "' --out '" + out +
+                           "' --jobs 1 --slice $SLURM_ARRAY_TASK_ID/" + std::to_string(slices);
+  std::printf("submitting %zu array task(s) to Slurm (logs in %s)\n", slices, logs.c_str());
+  std::fflush(stdout);
+  return run_process({"sbatch", "--wait", "--quiet", "--array=0-" + std::to_string(slices - 1),
+                      "--job-name=girtd-sweep", "--output=" + fs::absolute(logs).string() + "/%a.log",
+                      "--chdir=" + fs::current_path().string(), "--wrap=" + wrap},
+                     false);
+}
+
+}  // namespace
+
+int run_sweep(const SweepArgs& a) {
+  const SweepSpec spec = read_sweep_spec(a.spec);
+  size_t slice = 0, slices = 1;
+  if (!a.slice.empty() && std::sscanf(a.slice.c_str(), "%zu/%zu", &slice, &slices) != 2)
+    throw InputError("--slice", 0, "expected I/S, got '" + a.slice + "'");
+  if (slices == 0 || slice >= slices) throw InputError("--slice", 0, "I must lie in 0 .. S - 1");
+  if (a.slurm && !slurm_available())
+    throw InputError("--slurm", 0, "Slurm is not there (no sbatch, or no controller answers): tools/girtd slurm-up "
+                                   "starts a single-node cluster on this machine");
+  // Every input is read before anything runs (bad input: exit 2, nothing
+  // written); "repeat" draws one-frame inputs that many times, and an
+  // animation as it is.
+  std::map<std::string, bool> repeat;
+  const Params base = Params::from_files(spec.base);
+  for (const std::string& input : spec.inputs) repeat[input] = spec.repeat > 1 && read_input(input, std::nullopt, base).frames.size() == 1;
+  const std::string out = a.out_dir.empty() ? "out/sweep/" + fs::path(a.spec).stem().string() : a.out_dir;
+  const fs::path dir(out);
+  fs::create_directories(dir / "rows");
+  const std::vector<SweepPoint> points = sweep_points(spec, out);
+  std::vector<Task> tasks;
+  for (const SweepPoint& p : points)
+    for (const std::string& input : spec.inputs) tasks.push_back({&p, input, p.id + "-" + input_tag(input), repeat[input]});
+  std::vector<size_t> todo;
+  for (size_t i = slice; i < tasks.size(); i += slices)
+    if (!fs::exists(dir / "rows" / (tasks[i].id + ".json"))) todo.push_back(i);
+  std::printf("girtd sweep: %zu points x %zu inputs = %zu rows on %s; %zu already in %s\n", points.size(),
+              spec.inputs.size(), tasks.size(), spec.backend.c_str(), tasks.size() - todo.size(), out.c_str());
+  std::fflush(stdout);
+
+  if (a.slurm && !todo.empty()) {
+    const int rc = run_slurm_array(a, out, todo.size());
+    if (rc != 0) throw std::runtime_error("sbatch failed (exit " + std::to_string(rc) + "): see " + out + "/slurm/");
+    todo.clear();
+    for (size_t i = 0; i < tasks.size(); ++i)
+      if (!fs::exists(dir / "rows" / (tasks[i].id + ".json"))) todo.push_back(i);
+    if (!todo.empty()) std::printf("%zu row(s) the array did not write: running them here\n", todo.size());
+  }
+  Progress progress(tasks.size(), tasks.size() - todo.size());
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t k; (k = next++) < todo.size();) {
+      const Task& t = tasks[todo[k]];
+      if (const std::optional<json> row = run_task(t, spec, dir)) {
+        write_json_atomically(dir / "rows" / (t.id + ".json"), *row);
+        progress.step();
+      }
+    }
+  };
+  const int jobs = a.jobs > 0 ? a.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  for (int i = 0; i < std::min<int>(jobs, int(todo.size())); ++i) pool.emplace_back(worker);
+  for (std::thread& th : pool) th.join();
+  if (!a.slice.empty()) return 0;  // a Slurm task: the gathering process writes the tables
+  size_t missing = 0;
+  for (const Task& t : tasks) missing += !fs::exists(dir / "rows" / (t.id + ".json"));
+  if (missing) {
+    std::printf("%zu row(s) not run (their renders were killed): run the sweep again to finish it\n", missing);
+    return 1;
+  }
+
+  // Spot checks on rtl, kept in the rows as they finish (a rerun skips them).
+  int disagreements = 0;
+  if (spec.spot_check > 0 && spec.backend == "rtl")
+    std::printf("spot_check: the sweep ran on rtl already; nothing to check\n");
+  else if (spec.spot_check > 0) {
+    const auto checked = spot_check_points(spec, points);
+    std::printf("spot-checking %zu point(s) on rtl\n", checked.size());
+    for (const SweepPoint* p : checked)
+      for (const Task& t : tasks) {
+        if (t.point != p) continue;
+        const fs::path file = dir / "rows" / (t.id + ".json");
+        json row = read_json(file);
+        if (row["rtl_agrees"].is_null() && row["valid"].get<bool>()) {
+          row["rtl_agrees"] = spot_check(t, row, spec, dir);
+          write_json_atomically(file, row);
+        }
+        if (row["rtl_agrees"] == false) {
+          ++disagreements;
+          std::printf("rtl DISAGREES on point %s, %s\n", p->id.c_str(), t.input.c_str());
+        }
+      }
+  }
+
+  json rows = json::array();
+  for (const Task& t : tasks) rows.push_back(read_json(dir / "rows" / (t.id + ".json")));
+  std::vector<std::string> axes;
+  for (const SweepAxis& ax : spec.axes) axes.push_back(ax.name);
+  const SweepSummary summary = summarize_sweep(rows, axes, spec.inputs.size());
+  OutputSet files(out);
+  files.add_text("results.json", json{{"spec", a.spec}, {"backend", spec.backend}, {"repeat", spec.repeat},
+                                      {"axes", axes}, {"rows", rows}, {"points", summary.points}}
+                                      .dump(2) + "\n");
+  files.add_text("results.csv", sweep_csv(rows, axes));
+  files.add_text("sweep.md", "# girtd sweep " + a.spec + "\n\n" + summary.markdown);
+  files.commit();
+  std::fputs(summary.headline.c_str(), stdout);
+  const int plot = run_process({"/usr/bin/python3", std::string(GIRTD_SOURCE_DIR) + "/tools/sweep_plots.py", out}, false);
+  std::printf("wrote %s, results.csv, sweep.md%s\n", files.path("results.json").c_str(), plot == 0 ? " and the plots" : "");
+  if (plot != 0) std::fprintf(stderr, "girtd sweep: the plots failed (python3-matplotlib; tools/girtd installs it)\n");
+  if (disagreements) std::printf("%d spot check(s) disagree with rtl\n", disagreements);
+  return disagreements || plot != 0 ? 1 : 0;
+}
+
+}  // namespace girtd

@@ -1,0 +1,100 @@
+#include "sweep/sweep_spec.hpp"
+
+#include <filesystem>
+#include <set>
+
+#include "common/file_text.hpp"
+#include "common/input_error.hpp"
+#include "common/json_text.hpp"
+
+namespace girtd {
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+nlohmann::json SweepAxis::settings(size_t i) const {
+  return values.at(i).is_object() ? values[i] : json{{name, values[i]}};
+}
+
+size_t SweepSpec::point_count() const {
+  size_t n = 1;
+  for (const SweepAxis& a : axes) n *= a.values.size();
+  return n;
+}
+
+SweepSpec parse_sweep_spec(const std::string& text, const std::string& path) {
+  const json j = parse_json_text(text, path);
+  const std::map<std::string, int> lines = json_key_lines(text);
+  auto line = [&](const std::string& key) {
+    const auto it = lines.find(key);
+    return it == lines.end() ? 1 : it->second;
+  };
+  auto fail = [&](const std::string& key, const std::string& what) -> InputError {
+    return InputError(path, line(key), (key.empty() ? "" : key + ": ") + what);
+  };
+  if (!j.is_object()) throw fail("", "a sweep spec is a JSON object");
+  static const std::set<std::string> known = {"inputs", "backend", "base", "repeat", "spot_check", "axes"};
+  for (const auto& [k, v] : j.items())
+    if (!known.count(k)) throw fail(k, "unknown key (inputs, backend, base, repeat, spot_check, axes)");
+  SweepSpec s;
+  s.path = path;
+  const fs::path dir = fs::path(path).parent_path();
+  auto files = [&](const char* key, bool required) {
+    std::vector<std::string> out;
+    if (!j.contains(key)) {
+      if (required) throw fail("", std::string("no \"") + key + "\"");
+      return out;
+    }
+    if (!j[key].is_array() || (required && j[key].empty())) throw fail(key, "must be a non-empty list of paths");
+    for (const json& f : j[key]) {
+      if (!f.is_string()) throw fail(key, "must be a list of paths (strings)");
+      const std::string resolved = (dir / f.get<std::string>()).lexically_normal().string();
+      if (!fs::is_regular_file(resolved)) throw fail(key, "'" + f.get<std::string>() + "': no such file (paths are relative to the spec's folder)");
+      out.push_back(resolved);
+    }
+    return out;
+  };
+  s.inputs = files("inputs", true);
+  s.base = files("base", false);
+  if (j.contains("backend")) {
+    if (!j["backend"].is_string() || (j["backend"] != "approx" && j["backend"] != "rtl"))
+      throw fail("backend", "must be \"approx\" or \"rtl\" (a sweep judges modeled time)");
+    s.backend = j["backend"];
+  }
+  auto count = [&](const char* key, int lo, int hi) {
+    if (!j.contains(key)) return -1;
+    if (!j[key].is_number_integer() || j[key].get<int64_t>() < lo || j[key].get<int64_t>() > hi)
+      throw fail(key, "must be a whole number " + std::to_string(lo) + ".." + std::to_string(hi));
+    return j[key].get<int>();
+  };
+  if (int r = count("repeat", 1, 1000); r > 0) s.repeat = r;
+  if (int k = count("spot_check", 0, 100000); k >= 0) s.spot_check = k;
+  if (!j.contains("axes") || !j["axes"].is_object() || j["axes"].empty())
+    throw fail(j.contains("axes") ? "axes" : "", "\"axes\" must be a non-empty object of axis: [values]");
+  for (const auto& [name, values] : j["axes"].items()) {
+    const std::string key = "axes." + name;
+    if (!values.is_array() || values.empty()) throw fail(key, "an axis is a non-empty list of values");
+    SweepAxis a{name, {}};
+    const bool objects = values.front().is_object();
+    for (const json& v : values) {
+      if (v.is_object() != objects) throw fail(key, "values are all objects (several keys) or all plain values");
+      if (v.is_array()) throw fail(key, "a value is a number, text, true/false, null or an object of keys");
+      if (objects) {
+        if (v.empty()) throw fail(key, "an object value sets at least one key");
+        for (const auto& [k, x] : v.items())
+          if (x.is_object() || x.is_array()) throw fail(key, "'" + k + "': a key's value is a number, text, true/false or null");
+      }
+      a.values.push_back(v);
+    }
+    s.axes.push_back(a);
+  }
+  if (s.point_count() > 1000000) throw fail("axes", "more than 1,000,000 points");
+  return s;
+}
+
+SweepSpec read_sweep_spec(const std::string& path) {
+  const std::optional<std::string> text = read_file_text(path);
+  if (!text) throw InputError(path, 0, "cannot read the file");
+  return parse_sweep_spec(*text, path);
+}
+
+}  // namespace girtd

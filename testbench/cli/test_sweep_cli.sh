@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# girtd sweep end to end (CONTRACT.md) on traces/sweeps/small.json: 48 points
+# (5 axes, one of them setting two keys together) x 2 inputs, 2 frames each.
+# - invalid points (a FIFO depth over the built 32; write-behind, which approx
+#   does not model yet) are rows with the reason, not runs;
+# - a point's name is the hash of its merged configuration: the same on
+#   every input, different between points;
+# - rows carry the sustained rate and the cost; 2 points are spot-checked on
+#   rtl and agree;
+# - a killed sweep resumes: the rerun gives the clean run's rows (but for
+#   wall time);
+# - a bad spec is one line `SPEC:LINE: what`, exit 2.
+# Usage: test_sweep_cli.sh GIRTD_BINARY REPO_ROOT
+source "$(dirname "$0")/cli_lib.sh" "$1" "$2"
+S=traces/sweeps/small.json
+"$GIRTD" sweep $S --jobs 2 --out "$TMP/a" > "$TMP/out.txt" 2> "$TMP/err.txt" && ok || bad "sweep failed: $(tail -5 "$TMP/out.txt" "$TMP/err.txt")"
+J=$TMP/a/results.json
+jq -e '.rows | length == 96' "$J" >/dev/null && ok || bad "rows: $(jq '.rows | length' "$J")"
+jq -e '[.rows[] | select(."fifo.dda_had_depth" == 64)] | all(.valid == false and (.invalid | test("fifo.dda_had_depth")))' \
+  "$J" >/dev/null && ok || bad "depth 64 not invalid: $(jq -c '[.rows[] | select(."fifo.dda_had_depth" == 64)][0]' "$J")"
+jq -e '[.rows[] | select(."had.write_behind" == true and ."fifo.dda_had_depth" != 64)]
+       | length == 32 and all(.valid == false and (.invalid | test("approx does not model")))' "$J" >/dev/null \
+  && ok || bad "write-behind rows"
+jq -e '[.rows[] | select(.valid)] | length == 32 and all(.sustained_mpixels_per_s > 0 and .cost > 0
+       and (.image_sha256 | length == 64))' "$J" >/dev/null && ok || bad "valid rows: $(jq -c '[.rows[] | select(.valid)][0]' "$J")"
+jq -e '[.rows[].point | test("^[0-9a-f]{16}$")] | all' "$J" >/dev/null && ok || bad "point names"
+jq -e '(.points | length == 48) and ([.points[].point] | unique | length == 48)' "$J" >/dev/null \
+  && ok || bad "points not distinct: $(jq '[.points[].point] | unique | length' "$J")"
+jq -e '[.rows | group_by(.point)[] | length == 2] | all' "$J" >/dev/null && ok || bad "a point's rows have different names"
+jq -e '[.rows[] | select(.rtl_agrees != null)] | length == 4 and all(.rtl_agrees == true)' "$J" >/dev/null \
+  && ok || bad "spot checks: $(jq -c '[.rows[] | select(.rtl_agrees != null) | [.point, .rtl_agrees]]' "$J")"
+# Pages of 16 pixels, 16 x 1 or 4 x 4, read 16 cells at once: the same VRAM.
+jq -e '[.rows[] | select(.valid)] | group_by(.page | tostring) | map(.[0].cost_vram_chips) | unique | length == 1' "$J" \
+  >/dev/null && ok || bad "page shapes of 16 pixels cost different VRAM"
+head -1 "$TMP/a/results.csv" | grep -q '^dda.clock_ns,fifo.dda_had_depth,had.access_ns,had.write_behind,page,point,input,valid' \
+  && ok || bad "csv header: $(head -1 "$TMP/a/results.csv")"
+grep -q "## Pareto front" "$TMP/a/sweep.md" && ok || bad "sweep.md"
+[[ $(head -c 4 "$TMP/a/rate_vs_cost.png" | tail -c 3) == PNG ]] && ok || bad "no plot"
+
+# Killed after a few rows, then rerun: the same rows as the clean run.
+setsid "$GIRTD" sweep $S --jobs 2 --out "$TMP/b" > "$TMP/b.txt" 2>&1 &
+pid=$!
+for _ in $(seq 50); do [[ $(ls "$TMP/b/rows" 2>/dev/null | wc -l) -ge 20 ]] && break; sleep 0.2; done
+kill -- -"$pid" 2>/dev/null; wait "$pid" 2>/dev/null
+n=$(ls "$TMP/b/rows" | grep -c '\.json$')
+[[ $n -ge 20 && $n -lt 96 ]] && ok || bad "the kill came at $n rows"
+"$GIRTD" sweep $S --jobs 2 --out "$TMP/b" > "$TMP/b2.txt" 2>&1 && ok || bad "resumed sweep failed"
+grep -q "already in" "$TMP/b2.txt" && ok || bad "no resume line"
+norm='[.rows[] | del(.wall_s)] | sort_by(.point, .input)'
+if [[ "$(jq -c "$norm" "$TMP/b/results.json")" == "$(jq -c "$norm" "$J")" ]]; then ok
+else bad "resumed rows differ from the clean run's: $(diff <(jq -S "$norm" "$TMP/b/results.json") <(jq -S "$norm" "$J") | head -12)"; fi
+
+printf '{\n  "inputs": ["%s/traces/demo.trace"],\n  "axes": {"dda.clock_ns": [35]},\n  "colour": 1\n}\n' "$ROOT" > "$TMP/bad.json"
+"$GIRTD" sweep "$TMP/bad.json" --out "$TMP/c" > /dev/null 2> "$TMP/err"
+rc=$?
+[[ $rc -eq 2 && $(wc -l < "$TMP/err") -eq 1 ]] && grep -q "^$TMP/bad.json:4: colour: unknown key" "$TMP/err" \
+  && ok || bad "bad spec: rc $rc, $(cat "$TMP/err")"
+[[ ! -e "$TMP/c" ]] && ok || bad "a bad spec wrote output"
+finish

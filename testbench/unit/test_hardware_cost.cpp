@@ -1,0 +1,43 @@
+// models/cost/hardware_cost.hpp on the thesis' design, worked by hand from
+// GIRTD.md §4 and the weights the header states.
+#include <catch2/catch.hpp>
+
+#include "cost/hardware_cost.hpp"
+
+namespace girtd {
+namespace {
+
+TEST_CASE("hardware cost of the thesis' design, by hand", "[cost]") {
+  const HardwareCost c = hardware_cost(Params::defaults());
+  // EPs: R, G, B, T 20 bits (11 + 9), Z 26 (18 + 8), D1..D3 24 (12 + 12):
+  // 3 x 20 + 20 + 26 + 3 x 24 = 178 bits; four registers each, and X, Y
+  // (16 bits) with four registers each: 4 x 178 + 8 x 16 = 840.
+  CHECK(c.ep_register_bits == 840);
+  CHECK(c.adder_bits == 178 + 2 * 16);
+  // 840 / 8 = 105 register chips, 210 / 4 -> 53 adder chips; TTL at 35 ns.
+  CHECK(c.dda_clock_class == "TTL");
+  CHECK(c.dda_chips == 105 + 53);
+  // One page of 16 cells of 40 bits (RGB + Z), a 16-bit page number
+  // (20 address bits less 4), a valid bit: 657 bits -> 83 chips.
+  CHECK(c.cache_bits == 16 * 40 + 16 + 1);
+  CHECK(c.had_chips == 83);
+  // Two RGB buffers and Z: 1 M x 64 bits / 256 Kbit = 256 VRAM chips.
+  CHECK(c.vram_chips == 256);
+  // Nine stages of 10 Mflop/s: one board each.
+  CHECK(c.front_end_boards == 9);
+  CHECK(c.cost == c.dda_chips + c.fifo_chips + c.had_chips + c.vram_chips + 60.0 * 9);
+}
+
+TEST_CASE("hardware cost: write-behind adds a page register, ECL doubles the DDA", "[cost]") {
+  const Params base = Params::defaults();
+  const HardwareCost b = hardware_cost(base);
+  const HardwareCost wb = hardware_cost(Params::with_overrides({{"had", {{"write_behind", true}}}}, "test"));
+  CHECK(wb.write_behind_bits == 16 * 40 + 16 + 1);
+  CHECK(wb.had_chips > b.had_chips);
+  const HardwareCost ecl = hardware_cost(Params::with_overrides({{"dda", {{"clock_ns", 25.0}}}}, "test"));
+  CHECK(ecl.dda_clock_class == "ECL");
+  CHECK(ecl.dda_chips == 2 * b.dda_chips);
+}
+
+}  // namespace
+}  // namespace girtd
