@@ -17,9 +17,14 @@ stop() {
     [[ -f $dir/$d.pid ]] && pids+=("$(cat "$dir/$d.pid")")
   done
   [[ -f $dir/munged.started && -f /run/munge/munged.pid ]] && pids+=("$(cat /run/munge/munged.pid)")
-  ((${#pids[@]})) && kill "${pids[@]}" 2>/dev/null
+  ((${#pids[@]})) || { rm -f "$dir/munged.started"; return 0; }
+  local live=()
+  for p in "${pids[@]}"; do  # ours only: a stale pid file may name another process by now
+    grep -qE '^(slurmd|slurmctld|munged)$' "/proc/$p/comm" 2>/dev/null && live+=("$p")
+  done
+  ((${#live[@]})) && { kill "${live[@]}" 2>/dev/null || true; }
   for _ in $(seq 50); do  # until they are gone
-    kill -0 "${pids[@]}" 2>/dev/null || break
+    ((${#live[@]})) && kill -0 "${live[@]}" 2>/dev/null || break
     sleep 0.1
   done
   rm -f "$dir/munged.started"

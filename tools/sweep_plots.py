@@ -18,7 +18,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-TARGET = 20.0  # Mpixel/s, config targets.mpixels_per_s
+
 
 
 def main():
@@ -35,7 +35,8 @@ def main():
     if front:
         ax.plot([p["cost"] for p in front], [p["min_mpixels_per_s"] for p in front], "k.-", lw=1,
                 label="Pareto front (%d)" % len(front))
-    ax.axhline(TARGET, color="red", ls="--", lw=1, label="target %g Mpixel/s" % TARGET)
+    target = doc.get("target_mpixels_per_s", 20.0)  # the base configuration's targets.mpixels_per_s
+    ax.axhline(target, color="red", ls="--", lw=1, label="target %g Mpixel/s" % target)
     meeting = sorted((p for p in points if p["meets_target"]), key=lambda p: p["cost"])
     if meeting:
         best = meeting[0]

@@ -10,6 +10,17 @@ namespace girtd {
 
 namespace fs = std::filesystem;
 
+void check_output_dir(const std::string& dir, const char* option) {
+  for (fs::path p = fs::absolute(dir.empty() ? "." : dir); !p.empty(); p = p.parent_path()) {
+    std::error_code ec;
+    if (fs::exists(p, ec)) {
+      if (!fs::is_directory(p, ec)) throw InputError(option, 0, "'" + p.string() + "' is a file, not a directory");
+      return;
+    }
+    if (p == p.parent_path()) return;
+  }
+}
+
 OutputSet::~OutputSet() {
   if (committed_) return;
   std::error_code ec;

@@ -8,6 +8,11 @@
 
 namespace girtd {
 
+// Outputs are written only after a run: find out before it whether they
+// can be (an existing file where a directory must go is bad usage,
+// InputError(option, 0, ...)).
+void check_output_dir(const std::string& dir, const char* option);
+
 class OutputSet {
  public:
   explicit OutputSet(std::string dir) : dir_(std::move(dir)) {}

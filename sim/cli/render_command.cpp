@@ -104,19 +104,6 @@ void print_throughput(const nlohmann::json& r) {
                 r["target_preparer_triangles_per_s"].get<double>());
 }
 
-// Outputs are written only after the run: find out before it whether they
-// can be (an existing file where a directory must go is bad usage).
-void check_output_dir(const std::string& dir, const char* option) {
-  for (fs::path p = fs::absolute(dir.empty() ? "." : dir); !p.empty(); p = p.parent_path()) {
-    std::error_code ec;
-    if (fs::exists(p, ec)) {
-      if (!fs::is_directory(p, ec)) throw InputError(option, 0, "'" + p.string() + "' is a file, not a directory");
-      return;
-    }
-    if (p == p.parent_path()) return;
-  }
-}
-
 }  // namespace
 
 int run_render(const RenderArgs& a) {

@@ -4,9 +4,13 @@
 // in DIR/rows/ as it completes, so a rerun skips what is there and a killed
 // sweep resumes. Then K points chosen from the spec's hash are rerun on rtl
 // and the tables and plots are written.
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +20,7 @@
 #include <mutex>
 #include <optional>
 #include <random>
+#include <set>
 #include <thread>
 
 #include "cli/child_render.hpp"
@@ -36,6 +41,11 @@ using json = nlohmann::json;
 
 namespace {
 
+// Set by SIGINT / SIGTERM: the workers take no more rows, and a render that
+// ends by a signal then was stopped, not crashed (its row is left for the rerun).
+std::atomic<bool> g_stopping{false};
+extern "C" void on_stop_signal(int) { g_stopping = true; }
+
 struct Task {
   const SweepPoint* point;
   std::string input;
@@ -43,8 +53,11 @@ struct Task {
   bool repeat;     // a one-frame input, drawn spec.repeat times
 };
 
-std::string input_tag(const std::string& input) {
-  return sha256_hex(std::vector<uint8_t>(input.begin(), input.end())).substr(0, 8);
+// A row's file names its point, its input and how it ran (back end, frames):
+// a rerun with another back end or repeat count does not take old rows.
+std::string row_tag(const std::string& input, const SweepSpec& spec, bool repeat) {
+  const std::string key = input + "|" + spec.backend + "|" + std::to_string(repeat ? spec.repeat : 1);
+  return sha256_hex(std::vector<uint8_t>(key.begin(), key.end())).substr(0, 8);
 }
 
 json read_json(const fs::path& p) {
@@ -81,10 +94,10 @@ std::optional<json> run_task(const Task& t, const SweepSpec& spec, const fs::pat
   if (t.repeat) extra = {"--repeat", std::to_string(spec.repeat)};
   int rc = 0;
   const json r = render_in_child(t.input, spec.backend, run.string(), config, extra, run.string() + ".log", &rc);
-  if (rc < 0) return std::nullopt;
+  if (rc < 0 && g_stopping) return std::nullopt;
   if (r.is_null()) {
     row["valid"] = false;
-    row["invalid"] = "the render failed: " + run.string() + ".log";
+    row["invalid"] = std::string(rc < 0 ? "the render crashed: " : "the render failed: ") + run.string() + ".log";
     return row;
   }
   for (const char* k : {"modeled_mpixels_per_s", "sustained_mpixels_per_s", "modeled_time_s", "target_met", "bottleneck",
@@ -117,6 +130,13 @@ class Progress {
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
 
+// Fisher-Yates over mt19937_64: the same order from every standard library.
+template <class T>
+void seeded_shuffle(std::vector<T>& v, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  for (size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[size_t(rng() % i)]);
+}
+
 // The points spot-checked on rtl: K of the valid ones, drawn by a generator
 // seeded from the spec's hash (the same on every machine and under Slurm).
 std::vector<const SweepPoint*> spot_check_points(const SweepSpec& spec, const std::vector<SweepPoint>& points) {
@@ -127,26 +147,31 @@ std::vector<const SweepPoint*> spot_check_points(const SweepSpec& spec, const st
     if (p.invalid.empty()) valid.push_back(&p);
   std::sort(valid.begin(), valid.end(), [](auto* a, auto* b) { return a->id < b->id; });
   valid.erase(std::unique(valid.begin(), valid.end(), [](auto* a, auto* b) { return a->id == b->id; }), valid.end());
-  std::mt19937_64 rng(std::stoull(spec_sha.substr(0, 16), nullptr, 16));
-  std::shuffle(valid.begin(), valid.end(), rng);
+  seeded_shuffle(valid, std::stoull(spec_sha.substr(0, 16), nullptr, 16));
   if (valid.size() > size_t(spec.spot_check)) valid.resize(size_t(spec.spot_check));
   return valid;
 }
 
-// rtl agrees: the same picture and modeled time within 0.1 %.
-json spot_check(const Task& t, const json& row, const SweepSpec& spec, const fs::path& dir) {
+// rtl agrees: the same picture and modeled time within 0.1 %. A run that
+// fails is no verdict: rtl_agrees stays null, the reason in rtl_error.
+void spot_check(const Task& t, json& row, const SweepSpec& spec, const fs::path& dir) {
   const fs::path run = dir / "runs" / (t.id + "-rtl");
   ConfigFiles config = spec.base;
   config.push_back(t.point->config_file);
   std::vector<std::string> extra;
   if (t.repeat) extra = {"--repeat", std::to_string(spec.repeat)};
   const json r = render_in_child(t.input, "rtl", run.string(), config, extra, run.string() + ".log");
-  if (r.is_null()) return false;
+  if (r.is_null()) {
+    row["rtl_error"] = "the rtl render failed: " + run.string() + ".log";
+    return;
+  }
   const double a = row["modeled_time_s"], b = r["modeled_time_s"];
-  const bool agrees = r["image_sha256"] == row["image_sha256"] && std::abs(a - b) <= 1e-3 * b;
-  fs::remove_all(run);
-  return agrees;
+  row["rtl_agrees"] = r["image_sha256"] == row["image_sha256"] && std::abs(a - b) <= 1e-3 * b;
+  row["rtl_modeled_time_s"] = b;
+  if (row["rtl_agrees"].get<bool>()) fs::remove_all(run);  // a disagreement keeps its evidence
+  else row["rtl_run"] = run.string();
 }
+
 
 bool slurm_available() { return run_process({"sinfo", "--noheader"}, true) == 0; }
 
@@ -179,20 +204,35 @@ int run_sweep(const SweepArgs& a) {
   if (slices == 0 || slice >= slices) throw InputError("--slice", 0, "I must lie in 0 .. S - 1");
   if (a.slurm && !slurm_available())
     throw InputError("--slurm", 0, "Slurm is not there (no sbatch, or no controller answers): tools/girtd slurm-up "
-                                   "starts a single-node cluster on this machine");
+                                   "starts a single-node cluster on this machine (export the SLURM_CONF it prints)");
   // Every input is read before anything runs (bad input: exit 2, nothing
   // written); "repeat" draws one-frame inputs that many times, and an
   // animation as it is.
   std::map<std::string, bool> repeat;
   const Params base = Params::from_files(spec.base);
-  for (const std::string& input : spec.inputs) repeat[input] = spec.repeat > 1 && read_input(input, std::nullopt, base).frames.size() == 1;
+  for (const std::string& input : spec.inputs) {
+    const size_t frames = read_input(input, std::nullopt, base).frames.size();
+    repeat[input] = spec.repeat > 1 && frames == 1;
+    if (spec.repeat > 1 && frames > 1 && a.slice.empty())
+      std::fprintf(stderr, "warning: %s: %zu frames: \"repeat\" draws one-frame inputs; this one runs as it is\n",
+                   input.c_str(), frames);
+  }
   const std::string out = a.out_dir.empty() ? "out/sweep/" + fs::path(a.spec).stem().string() : a.out_dir;
+  check_output_dir(out, "--out");
   const fs::path dir(out);
   fs::create_directories(dir / "rows");
+  // One gathering sweep per folder at a time (its Slurm tasks excepted).
+  const int lock = a.slice.empty() ? open((dir / ".lock").c_str(), O_CREAT | O_RDWR, 0644) : -1;
+  if (lock >= 0 && flock(lock, LOCK_EX | LOCK_NB) != 0)
+    throw InputError("--out", 0, "another girtd sweep is running in " + out);
   const std::vector<SweepPoint> points = sweep_points(spec, out);
   std::vector<Task> tasks;
+  std::set<std::string> ids;  // two combinations can merge to one design: it runs once
   for (const SweepPoint& p : points)
-    for (const std::string& input : spec.inputs) tasks.push_back({&p, input, p.id + "-" + input_tag(input), repeat[input]});
+    for (const std::string& input : spec.inputs) {
+      const std::string id = p.id + "-" + row_tag(input, spec, repeat[input]);
+      if (ids.insert(id).second) tasks.push_back({&p, input, id, repeat[input]});
+    }
   std::vector<size_t> todo;
   for (size_t i = slice; i < tasks.size(); i += slices)
     if (!fs::exists(dir / "rows" / (tasks[i].id + ".json"))) todo.push_back(i);
@@ -202,7 +242,7 @@ int run_sweep(const SweepArgs& a) {
 
   if (a.slurm && !todo.empty()) {
     const int rc = run_slurm_array(a, out, todo.size());
-    if (rc != 0) throw std::runtime_error("sbatch failed (exit " + std::to_string(rc) + "): see " + out + "/slurm/");
+    if (rc != 0) std::fprintf(stderr, "warning: sbatch exited %d (logs in %s/slurm/)\n", rc, out.c_str());
     todo.clear();
     for (size_t i = 0; i < tasks.size(); ++i)
       if (!fs::exists(dir / "rows" / (tasks[i].id + ".json"))) todo.push_back(i);
@@ -210,10 +250,22 @@ int run_sweep(const SweepArgs& a) {
   }
   Progress progress(tasks.size(), tasks.size() - todo.size());
   std::atomic<size_t> next{0};
+  struct sigaction stop_action {};
+  stop_action.sa_handler = on_stop_signal;
+  sigaction(SIGINT, &stop_action, nullptr);
+  sigaction(SIGTERM, &stop_action, nullptr);
   auto worker = [&] {
-    for (size_t k; (k = next++) < todo.size();) {
+    for (size_t k; !g_stopping && (k = next++) < todo.size();) {
       const Task& t = tasks[todo[k]];
-      if (const std::optional<json> row = run_task(t, spec, dir)) {
+      std::optional<json> row;
+      try {
+        row = run_task(t, spec, dir);
+      } catch (const std::exception& e) {  // a row, not the end of the sweep
+        row = base_row(t);
+        (*row)["valid"] = false;
+        (*row)["invalid"] = std::string("the render's outputs could not be read: ") + e.what();
+      }
+      if (row) {
         write_json_atomically(dir / "rows" / (t.id + ".json"), *row);
         progress.step();
       }
@@ -226,8 +278,8 @@ int run_sweep(const SweepArgs& a) {
   if (!a.slice.empty()) return 0;  // a Slurm task: the gathering process writes the tables
   size_t missing = 0;
   for (const Task& t : tasks) missing += !fs::exists(dir / "rows" / (t.id + ".json"));
-  if (missing) {
-    std::printf("%zu row(s) not run (their renders were killed): run the sweep again to finish it\n", missing);
+  if (missing || g_stopping) {
+    std::printf("\nstopped: %zu row(s) not run; run the sweep again to finish it\n", missing);
     return 1;
   }
 
@@ -244,9 +296,10 @@ int run_sweep(const SweepArgs& a) {
         const fs::path file = dir / "rows" / (t.id + ".json");
         json row = read_json(file);
         if (row["rtl_agrees"].is_null() && row["valid"].get<bool>()) {
-          row["rtl_agrees"] = spot_check(t, row, spec, dir);
+          spot_check(t, row, spec, dir);
           write_json_atomically(file, row);
         }
+        if (row.contains("rtl_error")) std::printf("spot check: %s\n", row["rtl_error"].get<std::string>().c_str());
         if (row["rtl_agrees"] == false) {
           ++disagreements;
           std::printf("rtl DISAGREES on point %s, %s\n", p->id.c_str(), t.input.c_str());
@@ -255,12 +308,20 @@ int run_sweep(const SweepArgs& a) {
   }
 
   json rows = json::array();
-  for (const Task& t : tasks) rows.push_back(read_json(dir / "rows" / (t.id + ".json")));
+  for (const Task& t : tasks) {
+    json row = read_json(dir / "rows" / (t.id + ".json"));
+    const json now = base_row(t);  // this spec's axis names and cost model over a kept row's
+    for (const std::string& k : {std::string("point"), std::string("input")}) row[k] = now[k];
+    for (const auto& [k, v] : t.point->axis_values.items()) row[k] = v;
+    if (!t.point->cost.is_null()) row.update(t.point->cost);
+    rows.push_back(row);
+  }
   std::vector<std::string> axes;
   for (const SweepAxis& ax : spec.axes) axes.push_back(ax.name);
   const SweepSummary summary = summarize_sweep(rows, axes, spec.inputs.size());
   OutputSet files(out);
   files.add_text("results.json", json{{"spec", a.spec}, {"backend", spec.backend}, {"repeat", spec.repeat},
+                                      {"target_mpixels_per_s", base.target_mpixels_per_s},
                                       {"axes", axes}, {"rows", rows}, {"points", summary.points}}
                                       .dump(2) + "\n");
   files.add_text("results.csv", sweep_csv(rows, axes));
@@ -269,9 +330,9 @@ int run_sweep(const SweepArgs& a) {
   std::fputs(summary.headline.c_str(), stdout);
   const int plot = run_process({"/usr/bin/python3", std::string(GIRTD_SOURCE_DIR) + "/tools/sweep_plots.py", out}, false);
   std::printf("wrote %s, results.csv, sweep.md%s\n", files.path("results.json").c_str(), plot == 0 ? " and the plots" : "");
-  if (plot != 0) std::fprintf(stderr, "girtd sweep: the plots failed (python3-matplotlib; tools/girtd installs it)\n");
+  if (plot != 0) std::fprintf(stderr, "warning: the plot failed (python3-matplotlib; tools/girtd installs it)\n");
   if (disagreements) std::printf("%d spot check(s) disagree with rtl\n", disagreements);
-  return disagreements || plot != 0 ? 1 : 0;
+  return disagreements ? 1 : 0;
 }
 
 }  // namespace girtd

@@ -93,7 +93,14 @@ SweepSummary summarize_sweep(const json& rows, const std::vector<std::string>& a
     if (p["on_front"].get<bool>()) front.push_back(p);
     if (p["meets_target"].get<bool>()) meeting.push_back(p);
   }
-  auto by_cost = [](const json& a, const json& b) { return a["cost"].get<double>() < b["cost"].get<double>(); };
+  // Cheapest first; at equal cost the faster, then the point's name: the
+  // same order on every run.
+  auto by_cost = [](const json& a, const json& b) {
+    const double ca = a["cost"], cb = b["cost"], ra = a["min_mpixels_per_s"], rb = b["min_mpixels_per_s"];
+    if (ca != cb) return ca < cb;
+    if (ra != rb) return ra > rb;
+    return a["point"].get<std::string>() < b["point"].get<std::string>();
+  };
   std::sort(front.begin(), front.end(), by_cost);
   std::sort(meeting.begin(), meeting.end(), by_cost);
   const size_t invalid = s.points.size() - valid.size();

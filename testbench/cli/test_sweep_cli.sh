@@ -56,4 +56,12 @@ rc=$?
 [[ $rc -eq 2 && $(wc -l < "$TMP/err") -eq 1 ]] && grep -q "^$TMP/bad.json:4: colour: unknown key" "$TMP/err" \
   && ok || bad "bad spec: rc $rc, $(cat "$TMP/err")"
 [[ ! -e "$TMP/c" ]] && ok || bad "a bad spec wrote output"
+# Spec mistakes the parser catches at their line: an unknown key, a value of
+# the wrong kind, a key two axes set.
+for axes in '"dda.clok_ns": [35]' '"dda.clock_ns": ["fast"]' '"dda.clock_ns": [35], "both": [{"dda.clock_ns": 30}]'; do
+  printf '{\n  "inputs": ["%s/traces/demo.trace"],\n  "axes": {%s}\n}\n' "$ROOT" "$axes" > "$TMP/bad2.json"
+  "$GIRTD" sweep "$TMP/bad2.json" --out "$TMP/d" > /dev/null 2> "$TMP/err"
+  [[ $? -eq 2 ]] && grep -q "^$TMP/bad2.json:3: axes\." "$TMP/err" && ok || bad "spec axes {$axes}: $(cat "$TMP/err")"
+done
+[[ ! -e "$TMP/d" ]] && ok || bad "a bad spec wrote output"
 finish
