@@ -15,12 +15,18 @@ BackendTimingModel::BackendTimingModel(const Params& p)
       // hw/vram: a clear takes at least one tick.
       clear_ticks_(std::max<uint64_t>(1, uint64_t(p.vram_serial_transfers) *
                                              (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)))),
+      write_behind_(p.had_write_behind),
+      dirty_bits_(p.had_dirty_bits),
       layout_(rtl_layout(p)),
-      slot_page_(size_t(layout_.cache.pages), -1) {
-  if (p.had_write_behind || p.had_prefetch || p.had_dirty_bits || p.vram_steal_every_ns > 0)
-    throw InputError("--config", 0,
-                     "the back-end timing model covers the design as written: turn off had.write_behind, "
-                     "had.prefetch, had.dirty_bits and vram.steal_every_ns");
+      slot_page_(size_t(layout_.cache.pages), -1),
+      slot_dirty_(size_t(layout_.cache.pages), false) {
+  if (const std::string what = unmodeled_options(p); !what.empty()) throw InputError("--config", 0, what);
+}
+
+std::string unmodeled_options(const Params& p) {
+  if (!p.had_prefetch && p.vram_steal_every_ns == 0) return "";
+  return "the back-end timing model (approx) covers the design as written, write-behind and dirty bits, not "
+         "had.prefetch or vram.steal_every_ns: turn them off, or use the rtl back end";
 }
 
 uint64_t BackendTimingModel::next_en(uint64_t tick) const {
@@ -53,20 +59,34 @@ uint64_t BackendTimingModel::wait_for_room(uint64_t at) {
 // accesses; a blend adds its own time).
 void BackendTimingModel::push(const TimedPixel& p, uint64_t tick) {
   pushes_.push_back(tick);
-  const uint64_t pop = std::max(tick + 1, had_free_);
-  pops_.push_back(pop);
+  uint64_t pop = std::max(tick + 1, had_free_);
   const uint32_t page = layout_.page.number_of(p.x, p.y);
-  int64_t& in_slot = slot_page_[size_t(layout_.cache.slot_of(page))];
+  const size_t slot = size_t(layout_.cache.slot_of(page));
+  int64_t& in_slot = slot_page_[slot];
   uint64_t done;
   if (in_slot == int64_t(page)) {
     done = pop + std::max(access_, 2);
-  } else {  // the slot's page (if any) goes back, the new one comes in
+  } else {  // the slot's page (if any and, with dirty bits, if written) goes back, the new one comes in
     ++t_.page_misses;
-    const uint64_t loaded = pop + (in_slot >= 0 ? 2 * vram_ : vram_);
+    // A miss waits in IDLE for the write-behind write in flight.
+    const uint64_t ready = std::max(pop, vram_free_);
+    t_.had_vram_wait_ticks += ready - pop;
+    pop = ready;
+    const bool write_back = in_slot >= 0 && (slot_dirty_[slot] || !dirty_bits_);
+    uint64_t loaded;
+    if (write_back && write_behind_) {  // fetch first; the old page's write goes next, in the background
+      loaded = pop + vram_;
+      vram_free_ = loaded + 1 + vram_;
+    } else {
+      loaded = pop + (write_back ? 2 * vram_ : vram_);
+    }
     t_.had_vram_wait_ticks += loaded - pop;
     done = loaded + 1 + std::max(access_, 1);
     in_slot = page;
+    slot_dirty_[slot] = false;
   }
+  pops_.push_back(pop);
+  if (p.outcome == HadOutcome::kWritten || p.outcome == HadOutcome::kBlended) slot_dirty_[slot] = true;
   if (p.outcome == HadOutcome::kBlended) done += blend_;
   t_.had_busy_ticks += done - pop;
   had_free_ = done;
@@ -113,9 +133,10 @@ void BackendTimingModel::triangle(uint64_t dda_cycles, const std::vector<TimedPi
 
 // The back end is idle only on a DDA clock: the DDA shows it is ready for a
 // parameter set on an enabled tick (hw/dda in_ready_o), so an idle back end
-// is seen at the first enabled tick once the DDA and the HAD are done.
+// is seen at the first enabled tick once the DDA, the HAD and the VRAM (a
+// write-behind write in flight) are done.
 void BackendTimingModel::drain() {
-  t_.ticks = next_en(std::max({t_.ticks, dda_at_, had_free_}));
+  t_.ticks = next_en(std::max({t_.ticks, dda_at_, had_free_, vram_free_}));
   dda_at_ = t_.ticks;
 }
 
@@ -125,6 +146,7 @@ void BackendTimingModel::begin_frame() {
   dda_at_ = t_.ticks;
   had_free_ = t_.ticks;
   std::fill(slot_page_.begin(), slot_page_.end(), -1);
+  std::fill(slot_dirty_.begin(), slot_dirty_.end(), false);
 }
 
 void BackendTimingModel::end_frame() {
@@ -132,13 +154,16 @@ void BackendTimingModel::end_frame() {
   // The flush request, then slot by slot: a tick to look at it and, for a
   // page, its write-back (the HAD's FLUSH state, counted busy as the RTL does).
   t_.ticks += 1;
-  for (int64_t& in_slot : slot_page_) {
+  for (size_t slot = 0; slot < slot_page_.size(); ++slot) {
+    int64_t& in_slot = slot_page_[slot];
     t_.ticks += 1;
-    if (in_slot >= 0) {
-      t_.ticks += vram_;
-      t_.had_busy_ticks += vram_;
+    if (in_slot >= 0) {  // written back, or (clean, with dirty bits) only forgotten: one FLUSH tick
+      const uint64_t flush = slot_dirty_[slot] || !dirty_bits_ ? vram_ : 1;
+      t_.ticks += flush;
+      t_.had_busy_ticks += flush;
     }
     in_slot = -1;
+    slot_dirty_[slot] = false;
   }
   t_.ticks = next_en(t_.ticks) + 1;  // the swap, once the back end is seen idle (a DDA clock)
   dda_at_ = had_free_ = t_.ticks;

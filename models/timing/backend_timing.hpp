@@ -4,9 +4,13 @@
 // DDA acts on every dda-period-th tick and waits while the FIFO is full; the
 // HAD pops a pixel, spends an access (plus a blend) on a hit, and on a page
 // miss writes the old page back and fetches the new one (two VRAM cycles).
-// Models the design as written (no write-behind, prefetch, dirty bits or
-// stolen cycles: the constructor refuses them). A cache hit takes at least
-// two ticks, as in the RTL. Checked against the RTL's tick counts by
+// Models the design as written and two memory-side options: write-behind
+// (a miss fetches first; the old page is written next, in the background,
+// and the next miss waits for that write) and dirty bits (a page no pixel
+// was written to is not written back, on a miss or at the frame's end).
+// Prefetch and stolen VRAM cycles are not modeled: the constructor refuses
+// them (unmodeled_options). A cache hit takes at least two ticks, as in the
+// RTL. Checked against the RTL's tick counts by
 // testbench/unit/test_backend_timing.cpp.
 #pragma once
 
@@ -38,6 +42,10 @@ struct BackendTiming {
   uint64_t pixels = 0;
   int fifo_max = 0;
 };
+
+// What the event model does not cover in `p` ("" when it covers it all):
+// the approx back end, the benches and the sweeps ask before they run.
+std::string unmodeled_options(const Params& p);
 
 class BackendTimingModel {
  public:
@@ -77,10 +85,13 @@ class BackendTimingModel {
 
   int period_, access_, blend_, vram_, limit_;
   uint64_t clear_ticks_;
+  bool write_behind_, dirty_bits_;
   RtlLayout layout_;       // which pixels share a cache page, which slot a page takes
   uint64_t dda_at_ = 0;    // the DDA's next enabled tick
   uint64_t had_free_ = 0;  // the HAD's next IDLE tick
   std::vector<int64_t> slot_page_;  // the page in each cache slot, -1: none
+  std::vector<bool> slot_dirty_;    // a pixel was written to it since it came in (had.dirty_bits)
+  uint64_t vram_free_ = 0;          // the first tick the VRAM takes a request after a write-behind write
   std::deque<uint64_t> pops_;  // pop ticks of pixels possibly still in the FIFO
   std::deque<uint64_t> pushes_;
   uint64_t tri_clock0_ = 0, tri_wait_ticks_ = 0;  // the triangle being streamed

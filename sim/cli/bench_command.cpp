@@ -25,6 +25,7 @@
 #include "common/input_error.hpp"
 #include "io/trace_reader.hpp"
 #include "rtl/timing_comparison.hpp"
+#include "timing/backend_timing.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -106,10 +107,9 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
       "| trace | pixels | RTL modeled ms | model modeled ms | difference | RTL wall s | model wall s | speed-up | "
       "RTL DDA clocks per wall s |\n|---|---|---|---|---|---|---|---|---|\n";
   nlohmann::json timing_rows = nlohmann::json::array();
-  const bool as_written = !params.had_write_behind && !params.had_prefetch && !params.had_dirty_bits &&
-                          params.vram_steal_every_ns == 0;
-  if (!as_written) md2 += "(skipped: the event model covers the design as written, without the memory options)\n";
-  for (const std::string& path : as_written ? sample_traces_at({TraceLevel::kTriangle}) : std::vector<std::string>{}) {
+  const std::string unmodeled = unmodeled_options(params);
+  if (!unmodeled.empty()) md2 += "(skipped: " + unmodeled + ")\n";
+  for (const std::string& path : unmodeled.empty() ? sample_traces_at({TraceLevel::kTriangle}) : std::vector<std::string>{}) {
     const TimingComparison c = compare_timing(params, path);
     const double rtl_ms = double(c.rtl.ticks) * params.base_tick_ns * 1e-6;
     const double model_ms = double(c.model.ticks) * params.base_tick_ns * 1e-6;

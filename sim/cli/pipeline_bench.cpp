@@ -17,6 +17,7 @@
 #include "cli/child_render.hpp"
 #include "cli/expectations.hpp"
 #include "rtl/timing_comparison.hpp"
+#include "timing/backend_timing.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -88,11 +89,8 @@ PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config
       "| input | pixels | same frame | same counts | as blessed | rtl modeled ms | approx modeled ms | difference (ticks) | rtl wall s | "
       "approx wall s | speed-up | rtl DDA clocks per wall s | rtl wall ns/tick | bare wall ns/tick | coupling cost |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  const bool as_written = !params.had_write_behind && !params.had_prefetch && !params.had_dirty_bits &&
-                          params.vram_steal_every_ns == 0;
-  if (!as_written) {
-    b.markdown += "(skipped: the approx back end's event model covers the design as written, without the memory "
-                  "options)\n";
+  if (const std::string what = unmodeled_options(params); !what.empty()) {
+    b.markdown += "(skipped: " + what + ")\n";
     return b;
   }
   for (const std::string& input : inputs.empty() ? sample_workloads() : inputs) {

@@ -10,6 +10,7 @@
 #include "config/params.hpp"
 #include "cost/hardware_cost.hpp"
 #include "io/sha256.hpp"
+#include "timing/backend_timing.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -42,9 +43,7 @@ json cost_json(const HardwareCost& c) {
 // What the chosen back end cannot run (approx's event model covers the
 // memory side as written; issue #19 extends it).
 std::string backend_refuses(const std::string& backend, const Params& p) {
-  if (backend == "approx" && (p.had_write_behind || p.had_prefetch || p.had_dirty_bits || p.vram_steal_every_ns > 0))
-    return "approx does not model write-behind, prefetch, dirty bits or stolen VRAM cycles yet: use \"backend\": \"rtl\"";
-  return "";
+  return backend == "approx" ? unmodeled_options(p) : "";
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # girtd sweep end to end (CONTRACT.md) on traces/sweeps/small.json: 48 points
 # (5 axes, one of them setting two keys together) x 2 inputs, 2 frames each.
-# - invalid points (a FIFO depth over the built 32; write-behind, which approx
+# - invalid points (a FIFO depth over the built 32; prefetch, which approx
 #   does not model yet) are rows with the reason, not runs;
 # - a point's name is the hash of its merged configuration: the same on
 #   every input, different between points;
@@ -18,9 +18,9 @@ J=$TMP/a/results.json
 jq -e '.rows | length == 96' "$J" >/dev/null && ok || bad "rows: $(jq '.rows | length' "$J")"
 jq -e '[.rows[] | select(."fifo.dda_had_depth" == 64)] | all(.valid == false and (.invalid | test("fifo.dda_had_depth")))' \
   "$J" >/dev/null && ok || bad "depth 64 not invalid: $(jq -c '[.rows[] | select(."fifo.dda_had_depth" == 64)][0]' "$J")"
-jq -e '[.rows[] | select(."had.write_behind" == true and ."fifo.dda_had_depth" != 64)]
-       | length == 32 and all(.valid == false and (.invalid | test("approx does not model")))' "$J" >/dev/null \
-  && ok || bad "write-behind rows"
+jq -e '[.rows[] | select(."had.prefetch" == true and ."fifo.dda_had_depth" != 64)]
+       | length == 32 and all(.valid == false and (.invalid | test("had.prefetch")))' "$J" >/dev/null \
+  && ok || bad "prefetch rows: $(jq -c '[.rows[] | select(."had.prefetch" == true)][0]' "$J")"
 jq -e '[.rows[] | select(.valid)] | length == 32 and all(.sustained_mpixels_per_s > 0 and .cost > 0
        and (.image_sha256 | length == 64))' "$J" >/dev/null && ok || bad "valid rows: $(jq -c '[.rows[] | select(.valid)][0]' "$J")"
 jq -e '[.rows[].point | test("^[0-9a-f]{16}$")] | all' "$J" >/dev/null && ok || bad "point names"
@@ -32,7 +32,7 @@ jq -e '[.rows[] | select(.rtl_agrees != null)] | length == 4 and all(.rtl_agrees
 # Pages of 16 pixels, 16 x 1 or 4 x 4, read 16 cells at once: the same VRAM.
 jq -e '[.rows[] | select(.valid)] | group_by(.page | tostring) | map(.[0].cost_vram_chips) | unique | length == 1' "$J" \
   >/dev/null && ok || bad "page shapes of 16 pixels cost different VRAM"
-head -1 "$TMP/a/results.csv" | grep -q '^dda.clock_ns,fifo.dda_had_depth,had.access_ns,had.write_behind,page,point,input,valid' \
+head -1 "$TMP/a/results.csv" | grep -q '^dda.clock_ns,fifo.dda_had_depth,had.access_ns,had.prefetch,page,point,input,valid' \
   && ok || bad "csv header: $(head -1 "$TMP/a/results.csv")"
 grep -q "## Pareto front" "$TMP/a/sweep.md" && ok || bad "sweep.md"
 [[ $(head -c 4 "$TMP/a/rate_vs_cost.png" | tail -c 3) == PNG ]] && ok || bad "no plot"
