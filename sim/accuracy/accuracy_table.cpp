@@ -6,6 +6,8 @@
 #include <map>
 #include <sstream>
 
+#include "io/csv_field.hpp"
+
 namespace girtd {
 
 using json = nlohmann::json;
@@ -202,20 +204,11 @@ std::string accuracy_csv(const json& rows) {
   for (const char* cell : {"image", "llvmpipe"})
     for (const char* k : kPicture) o << cell << "." << k << ",";
   o << "invalid\n";
-  auto field = [](const json& v) {
-    if (v.is_null()) return std::string();
-    if (v.is_string()) {  // RFC 4180: quotes doubled
-      std::string q;
-      for (char c : v.get<std::string>()) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-      return "\"" + q + "\"";
-    }
-    return v.dump();
-  };
   for (const json& r : rows) {
-    for (const char* c : kColumns) o << field(r.value(c, json())) << ",";
+    for (const char* c : kColumns) o << csv_field(r.value(c, json())) << ",";
     for (const char* cell : {"image", "llvmpipe"})
-      for (const char* k : kPicture) o << (r.value(cell, json()).is_null() ? "" : field(r[cell][k])) << ",";
-    o << field(r.value("invalid", json())) << "\n";
+      for (const char* k : kPicture) o << (r.value(cell, json()).is_null() ? "" : csv_field(r[cell][k])) << ",";
+    o << csv_field(r.value("invalid", json())) << "\n";
   }
   return o.str();
 }

@@ -6,7 +6,6 @@
 
 #include "cli/output_set.hpp"
 #include "common/input_error.hpp"
-#include "io/sha256.hpp"
 
 namespace girtd {
 
@@ -83,11 +82,6 @@ void save_expectations(const json& inputs, const std::string& key) {
   OutputSet out(path.parent_path().string());
   out.add_text(path.filename().string(), file.dump(1) + "\n");
   out.commit();
-}
-
-std::string config_key(const Params& params) {
-  const std::string text = params.source.dump();
-  return sha256_hex(std::vector<uint8_t>(text.begin(), text.end())).substr(0, 16);
 }
 
 }  // namespace girtd

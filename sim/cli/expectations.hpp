@@ -25,11 +25,6 @@ nlohmann::json expectation_of(const nlohmann::json& report, const Params& params
 // "key: expected X, got Y" for every stored field `got` has and differs in.
 std::vector<std::string> expectation_differences(const nlohmann::json& expected, const nlohmann::json& got);
 
-// A configuration's identity: the first 16 hex digits of the SHA-256 of the
-// merged configuration. Expectations are compared only under the
-// configuration they were blessed with.
-std::string config_key(const Params& params);
-
 // The stored file; nullopt when there is none.
 struct StoredExpectations {
   std::string config_key;

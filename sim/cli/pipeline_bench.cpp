@@ -16,6 +16,7 @@
 #include "io/workload_list.hpp"
 #include "cli/child_render.hpp"
 #include "cli/expectations.hpp"
+#include "io/sha256.hpp"
 #include "rtl/timing_comparison.hpp"
 #include "timing/backend_timing.hpp"
 

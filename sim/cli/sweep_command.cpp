@@ -1,6 +1,6 @@
 // girtd sweep: a design-space sweep (CONTRACT.md). Every point x input is a
 // `girtd render` in its own process, run by a pool of local workers (or, with
-// --slurm, a Slurm job array running `girtd sweep --task`); each row is kept
+// --slurm, a Slurm job array running `girtd sweep --slice I/S`); each row is kept
 // in DIR/rows/ as it completes, so a rerun skips what is there and a killed
 // sweep resumes. Then K points chosen from the spec's hash are rerun on rtl
 // and the tables and plots are written.
@@ -57,7 +57,7 @@ struct Task {
 // a rerun with another back end or repeat count does not take old rows.
 std::string row_tag(const std::string& input, const SweepSpec& spec, bool repeat) {
   const std::string key = input + "|" + spec.backend + "|" + std::to_string(repeat ? spec.repeat : 1);
-  return sha256_hex(std::vector<uint8_t>(key.begin(), key.end())).substr(0, 8);
+  return sha256_hex(key).substr(0, 8);
 }
 
 json read_json(const fs::path& p) {
@@ -71,15 +71,27 @@ void write_json_atomically(const fs::path& p, const json& j) {
   fs::rename(tmp, p);
 }
 
+// What a row takes from its render's report.json.
+constexpr const char* kReportColumns[] = {"modeled_mpixels_per_s", "sustained_mpixels_per_s", "modeled_time_s",
+                                          "target_met", "bottleneck", "image_sha256", "wall_s"};
+
 json base_row(const Task& t) {
-  json row = {{"point", t.point->id}, {"input", t.input}, {"valid", t.point->invalid.empty()}};
+  json row = {{"point", t.point->id}, {"input", t.input}, {"valid", t.point->invalid.empty()}, {"rtl_agrees", nullptr}};
   for (const auto& [axis, v] : t.point->axis_values.items()) row[axis] = v;
-  for (const char* k : {"modeled_mpixels_per_s", "sustained_mpixels_per_s", "modeled_time_s", "target_met", "bottleneck",
-                        "image_sha256", "wall_s", "rtl_agrees"})
-    row[k] = nullptr;
+  for (const char* k : kReportColumns) row[k] = nullptr;
   if (!t.point->cost.is_null()) row.update(t.point->cost);
   if (!t.point->invalid.empty()) row["invalid"] = t.point->invalid;
   return row;
+}
+
+// The task's render on `backend` into `run` (its log beside it): the
+// spec's base files and the point's, the frames the spec asks for.
+json render_task(const Task& t, const SweepSpec& spec, const std::string& backend, const fs::path& run, int* rc) {
+  ConfigFiles config = spec.base;
+  config.push_back(t.point->config_file);
+  std::vector<std::string> extra;
+  if (t.repeat) extra = {"--repeat", std::to_string(spec.repeat)};
+  return render_in_child(t.input, backend, run.string(), config, extra, run.string() + ".log", rc);
 }
 
 // One row: the point's render of the input; none when the render was
@@ -88,21 +100,15 @@ std::optional<json> run_task(const Task& t, const SweepSpec& spec, const fs::pat
   json row = base_row(t);
   if (!t.point->invalid.empty()) return row;
   const fs::path run = dir / "runs" / t.id;
-  ConfigFiles config = spec.base;
-  config.push_back(t.point->config_file);
-  std::vector<std::string> extra;
-  if (t.repeat) extra = {"--repeat", std::to_string(spec.repeat)};
   int rc = 0;
-  const json r = render_in_child(t.input, spec.backend, run.string(), config, extra, run.string() + ".log", &rc);
+  const json r = render_task(t, spec, spec.backend, run, &rc);
   if (rc < 0 && g_stopping) return std::nullopt;
   if (r.is_null()) {
     row["valid"] = false;
     row["invalid"] = std::string(rc < 0 ? "the render crashed: " : "the render failed: ") + run.string() + ".log";
     return row;
   }
-  for (const char* k : {"modeled_mpixels_per_s", "sustained_mpixels_per_s", "modeled_time_s", "target_met", "bottleneck",
-                        "image_sha256", "wall_s"})
-    row[k] = r[k];
+  for (const char* k : kReportColumns) row[k] = r[k];
   fs::remove_all(run);  // the frame is not kept: its SHA is
   fs::remove(run.string() + ".log");
   return row;
@@ -141,7 +147,7 @@ void seeded_shuffle(std::vector<T>& v, uint64_t seed) {
 // seeded from the spec's hash (the same on every machine and under Slurm).
 std::vector<const SweepPoint*> spot_check_points(const SweepSpec& spec, const std::vector<SweepPoint>& points) {
   const std::string text = read_file_text(spec.path).value_or("");
-  const std::string spec_sha = sha256_hex(std::vector<uint8_t>(text.begin(), text.end()));
+  const std::string spec_sha = sha256_hex(text);
   std::vector<const SweepPoint*> valid;
   for (const SweepPoint& p : points)
     if (p.invalid.empty()) valid.push_back(&p);
@@ -156,11 +162,7 @@ std::vector<const SweepPoint*> spot_check_points(const SweepSpec& spec, const st
 // fails is no verdict: rtl_agrees stays null, the reason in rtl_error.
 void spot_check(const Task& t, json& row, const SweepSpec& spec, const fs::path& dir) {
   const fs::path run = dir / "runs" / (t.id + "-rtl");
-  ConfigFiles config = spec.base;
-  config.push_back(t.point->config_file);
-  std::vector<std::string> extra;
-  if (t.repeat) extra = {"--repeat", std::to_string(spec.repeat)};
-  const json r = render_in_child(t.input, "rtl", run.string(), config, extra, run.string() + ".log");
+  const json r = render_task(t, spec, "rtl", run, nullptr);
   if (r.is_null()) {
     row["rtl_error"] = "the rtl render failed: " + run.string() + ".log";
     return;

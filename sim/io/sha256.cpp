@@ -20,4 +20,8 @@ std::string sha256_hex(const std::vector<uint8_t>& bytes) {
   return out;
 }
 
+std::string sha256_hex(const std::string& text) { return sha256_hex(std::vector<uint8_t>(text.begin(), text.end())); }
+
+std::string config_key(const Params& params) { return sha256_hex(params.source.dump()).substr(0, 16); }
+
 }  // namespace girtd

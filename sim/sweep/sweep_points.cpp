@@ -18,10 +18,6 @@ using json = nlohmann::json;
 
 namespace {
 
-std::string hash16(const std::string& text) {
-  return sha256_hex(std::vector<uint8_t>(text.begin(), text.end())).substr(0, 16);
-}
-
 json cost_json(const HardwareCost& c) {
   return {{"cost", c.cost},
           {"cost_dda_chips", c.dda_chips},
@@ -72,13 +68,13 @@ std::vector<SweepPoint> sweep_points(const SweepSpec& spec, const std::string& d
     files.push_back(tmp.string());
     try {
       const Params p = Params::from_files(files);
-      pt.id = hash16(p.source.dump());
+      pt.id = config_key(p);
       pt.invalid = backend_refuses(spec.backend, p);
       pt.cost = cost_json(hardware_cost(p));
     } catch (const InputError& e) {
       std::string base_text;
       for (const std::string& b : spec.base) base_text += b + "\n";
-      pt.id = hash16(base_text + override_text);
+      pt.id = sha256_hex(base_text + override_text).substr(0, 16);
       pt.invalid = e.what();  // the key and why, without the scratch file's name
     }
     pt.config_file = (points_dir / (pt.id + ".json")).string();

@@ -5,6 +5,8 @@
 #include <map>
 #include <sstream>
 
+#include "io/csv_field.hpp"
+
 namespace girtd {
 
 using json = nlohmann::json;
@@ -15,14 +17,6 @@ std::string text(const json& v) {
   if (v.is_null()) return "";
   if (v.is_string()) return v.get<std::string>();
   return v.dump();
-}
-
-std::string csv_field(const json& v) {
-  std::string t = text(v);
-  if (t.find_first_of(",\"\n") == std::string::npos) return t;
-  std::string q;
-  for (char c : t) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return "\"" + q + "\"";
 }
 
 std::string fmt(const char* f, double v) {
