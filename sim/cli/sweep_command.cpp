@@ -102,7 +102,12 @@ std::optional<json> run_task(const Task& t, const SweepSpec& spec, const fs::pat
   const fs::path run = dir / "runs" / t.id;
   int rc = 0;
   const json r = render_task(t, spec, spec.backend, run, &rc);
-  if (rc < 0 && g_stopping) return std::nullopt;
+  // The same signal reaches this process and the child together: the child's
+  // end may be seen before our handler has run.
+  if (rc == kStopped || (rc < 0 && g_stopping)) {
+    g_stopping = true;
+    return std::nullopt;
+  }
   if (r.is_null()) {
     row["valid"] = false;
     row["invalid"] = std::string(rc < 0 ? "the render crashed: " : "the render failed: ") + run.string() + ".log";

@@ -52,8 +52,9 @@ int run_process_timed(const std::vector<std::string>& args, const std::string& l
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  if (!WIFEXITED(status)) return -1;
-  return WEXITSTATUS(status);
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  const int sig = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  return sig == SIGINT || sig == SIGTERM || sig == SIGHUP ? kStopped : -1;
 }
 
 std::string self_executable() {

@@ -6,9 +6,11 @@
 
 namespace girtd {
 
-// argv[0] is looked up on PATH. Returns the exit code, or -1 if the program
-// could not be started or did not exit normally. `quiet` sends its stdout
+// argv[0] is looked up on PATH. Returns the exit code, kStopped if a
+// SIGINT, SIGTERM or SIGHUP ended it (someone stopped it: not a crash), or -1
+// if the program could not be started or ended otherwise (a crash). `quiet` sends its stdout
 // and stderr to /dev/null.
+inline constexpr int kStopped = -3;
 int run_process(const std::vector<std::string>& argv, bool quiet);
 // The same with its stdout and stderr appended to `log_path` ("" keeps ours).
 int run_process_logged(const std::vector<std::string>& argv, const std::string& log_path);
