@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "common/input_error.hpp"
 
 namespace girtd {
 
@@ -20,13 +19,7 @@ BackendTimingModel::BackendTimingModel(const Params& p)
       layout_(rtl_layout(p)),
       slot_page_(size_t(layout_.cache.pages), -1),
       slot_dirty_(size_t(layout_.cache.pages), false) {
-  if (const std::string what = unmodeled_options(p); !what.empty()) throw InputError("--config", 0, what);
-}
-
-std::string unmodeled_options(const Params& p) {
-  if (!p.had_prefetch && p.vram_steal_every_ns == 0) return "";
-  return "the back-end timing model (approx) covers the design as written, write-behind and dirty bits, not "
-         "had.prefetch or vram.steal_every_ns: turn them off, or use the rtl back end";
+  if (p.had_prefetch || p.vram_steal_every_ns > 0) stepped_ = std::make_unique<MemorySideTicks>(p);
 }
 
 uint64_t BackendTimingModel::next_en(uint64_t tick) const {
@@ -44,6 +37,13 @@ uint64_t BackendTimingModel::fifo_count_at(uint64_t tick) const {
 // again every DDA clock. Jumps straight to the first clock after enough
 // pops (no push happens meanwhile), counting the clocks lost.
 uint64_t BackendTimingModel::wait_for_room(uint64_t at) {
+  if (stepped_) {  // the pops before `at` are known once the memory side has run up to it
+    for (stepped_->run_until(at); stepped_->fifo_count() >= uint64_t(limit_); stepped_->run_until(at)) {
+      at += period_;
+      ++t_.dda_wait_clocks;
+    }
+    return at;
+  }
   for (uint64_t count = fifo_count_at(at); count >= uint64_t(limit_); count = fifo_count_at(at)) {
     const auto popped = std::lower_bound(pops_.begin(), pops_.end(), at) - pops_.begin();
     const uint64_t frees_after = pops_[static_cast<size_t>(popped) + (count - limit_)];  // that pop makes room
@@ -58,6 +58,11 @@ uint64_t BackendTimingModel::wait_for_room(uint64_t at) {
 // access's first; a miss writes back and fetches, each one VRAM cycle, then
 // accesses; a blend adds its own time).
 void BackendTimingModel::push(const TimedPixel& p, uint64_t tick) {
+  if (stepped_) {
+    stepped_->push(layout_.page.number_of(p.x, p.y), p.outcome, tick);
+    ++t_.pixels;
+    return;
+  }
   pushes_.push_back(tick);
   uint64_t pop = std::max(tick + 1, had_free_);
   const uint32_t page = layout_.page.number_of(p.x, p.y);
@@ -112,7 +117,7 @@ void BackendTimingModel::pixel(const TimedPixel& p) {
   const uint64_t at = wait_for_room(due);
   tri_wait_ticks_ += at - due;
   push(p, at);
-  t_.fifo_max = std::max<int>(t_.fifo_max, int(fifo_count_at(at + 1)));
+  if (!stepped_) t_.fifo_max = std::max<int>(t_.fifo_max, int(fifo_count_at(at + 1)));
   tri_last_push_ = at;
 }
 
@@ -136,13 +141,20 @@ void BackendTimingModel::triangle(uint64_t dda_cycles, const std::vector<TimedPi
 // is seen at the first enabled tick once the DDA, the HAD and the VRAM (a
 // write-behind write in flight) are done.
 void BackendTimingModel::drain() {
+  if (stepped_) return drain_stepped();
   t_.ticks = next_en(std::max({t_.ticks, dda_at_, had_free_, vram_free_}));
   dda_at_ = t_.ticks;
 }
 
 void BackendTimingModel::begin_frame() {
   drain();
-  t_.ticks = next_en(t_.ticks + clear_ticks_);  // seen idle again on a DDA clock
+  if (stepped_) {  // the clear is requested on this tick; the back end is then seen idle again
+    stepped_->clear();
+    t_.ticks += 1;
+    drain_stepped();
+  } else {
+    t_.ticks = next_en(t_.ticks + clear_ticks_);  // seen idle again on a DDA clock
+  }
   dda_at_ = t_.ticks;
   had_free_ = t_.ticks;
   std::fill(slot_page_.begin(), slot_page_.end(), -1);
@@ -150,6 +162,7 @@ void BackendTimingModel::begin_frame() {
 }
 
 void BackendTimingModel::end_frame() {
+  if (stepped_) return end_frame_stepped();
   drain();
   // The flush request, then slot by slot: a tick to look at it and, for a
   // page, its write-back (the HAD's FLUSH state, counted busy as the RTL does).
@@ -167,6 +180,37 @@ void BackendTimingModel::end_frame() {
   }
   t_.ticks = next_en(t_.ticks) + 1;  // the swap, once the back end is seen idle (a DDA clock)
   dda_at_ = had_free_ = t_.ticks;
+}
+
+// The first DDA clock from the later of the DDA's end and the last tick
+// seen on which the memory side is idle too.
+void BackendTimingModel::drain_stepped() {
+  uint64_t at = next_en(std::max({t_.ticks, dda_at_, stepped_->now()}));
+  for (stepped_->run_until(at); !stepped_->idle(); stepped_->run_until(at)) at += period_;
+  t_.ticks = at;
+  dda_at_ = at;
+  take_stepped_counts();
+}
+
+// As the RTL driver does it: drain, the flush request for a tick and one
+// more tick, drain (the HAD writes the cache back), the swap's tick.
+void BackendTimingModel::end_frame_stepped() {
+  drain_stepped();
+  stepped_->flush();
+  stepped_->run_until(t_.ticks + 2);
+  t_.ticks += 2;
+  drain_stepped();
+  stepped_->run_until(t_.ticks + 1);
+  t_.ticks += 1;
+  dda_at_ = had_free_ = t_.ticks;
+  take_stepped_counts();
+}
+
+void BackendTimingModel::take_stepped_counts() {
+  t_.page_misses = stepped_->page_misses();
+  t_.had_busy_ticks = stepped_->busy_ticks();
+  t_.had_vram_wait_ticks = stepped_->vram_wait_ticks();
+  t_.fifo_max = int(stepped_->fifo_max());
 }
 
 }  // namespace girtd

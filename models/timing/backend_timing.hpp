@@ -8,21 +8,23 @@
 // (a miss fetches first; the old page is written next, in the background,
 // and the next miss waits for that write) and dirty bits (a page no pixel
 // was written to is not written back, on a miss or at the frame's end).
-// Prefetch and stolen VRAM cycles are not modeled: the constructor refuses
-// them (unmodeled_options). A cache hit takes at least two ticks, as in the
-// RTL. Checked against the RTL's tick counts by
-// testbench/unit/test_backend_timing.cpp.
+// With prefetch or stolen VRAM cycles the memory side is stepped tick by
+// tick instead (memory_side_ticks.*), the DDA side still by events. A cache
+// hit takes at least two ticks, as in the RTL. Checked against the RTL's
+// tick counts by testbench/unit/test_backend_timing.cpp.
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "config/params.hpp"
 #include "config/rtl_layout.hpp"
 #include "had/had.hpp"
+#include "timing/memory_side_ticks.hpp"
 
 namespace girtd {
 
@@ -42,10 +44,6 @@ struct BackendTiming {
   uint64_t pixels = 0;
   int fifo_max = 0;
 };
-
-// What the event model does not cover in `p` ("" when it covers it all):
-// the approx back end, the benches and the sweeps ask before they run.
-std::string unmodeled_options(const Params& p);
 
 class BackendTimingModel {
  public:
@@ -82,6 +80,9 @@ class BackendTimingModel {
   void push(const TimedPixel& p, uint64_t tick);
   uint64_t fifo_count_at(uint64_t tick) const;  // pushed before `tick` and not popped before it
   uint64_t wait_for_room(uint64_t at);            // the first DDA tick from `at` with room in the FIFO
+  void drain_stepped();  // drain(), end_frame() and begin_frame() with the stepped memory side
+  void end_frame_stepped();
+  void take_stepped_counts();
 
   int period_, access_, blend_, vram_, limit_;
   uint64_t clear_ticks_;
@@ -97,6 +98,7 @@ class BackendTimingModel {
   uint64_t tri_clock0_ = 0, tri_wait_ticks_ = 0;  // the triangle being streamed
   std::optional<uint64_t> tri_last_push_;
   BackendTiming t_;
+  std::unique_ptr<MemorySideTicks> stepped_;  // with prefetch or stolen cycles: the memory side, tick by tick
 };
 
 }  // namespace girtd

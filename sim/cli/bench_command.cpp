@@ -45,12 +45,13 @@ nlohmann::json measured_on() {
 }  // namespace
 
 int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool leave_out_only,
-              bool bless, const std::vector<std::string>& inputs) {
+              bool bless, bool option_matrix, const std::vector<std::string>& inputs) {
   const Params params = load_params(config);
   if (bless && !config.empty())
     throw InputError("--bless", 0, "the stored expectations are the thesis configuration's: bless without --config");
   if (pipeline_only) {
-    const PipelineBench pb = run_pipeline_bench(params, config, out_dir, bless, inputs);
+    const PipelineBench pb = option_matrix ? run_option_matrix_bench(config, out_dir, inputs)
+                                           : run_pipeline_bench(params, config, out_dir, bless, inputs);
     OutputSet files(out_dir);
     files.add_text("pipeline.json", nlohmann::json{{"rows", pb.rows}, {"config", params.source}}.dump(2) + "\n");
     files.add_text("pipeline.md", "# girtd bench --pipeline\n" + pb.markdown);
@@ -107,9 +108,7 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
       "| trace | pixels | RTL modeled ms | model modeled ms | difference | RTL wall s | model wall s | speed-up | "
       "RTL DDA clocks per wall s |\n|---|---|---|---|---|---|---|---|---|\n";
   nlohmann::json timing_rows = nlohmann::json::array();
-  const std::string unmodeled = unmodeled_options(params);
-  if (!unmodeled.empty()) md2 += "(skipped: " + unmodeled + ")\n";
-  for (const std::string& path : unmodeled.empty() ? sample_traces_at({TraceLevel::kTriangle}) : std::vector<std::string>{}) {
+  for (const std::string& path : sample_traces_at({TraceLevel::kTriangle})) {
     const TimingComparison c = compare_timing(params, path);
     const double rtl_ms = double(c.rtl.ticks) * params.base_tick_ns * 1e-6;
     const double model_ms = double(c.model.ticks) * params.base_tick_ns * 1e-6;

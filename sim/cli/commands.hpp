@@ -32,9 +32,10 @@ struct RenderArgs {
 int run_render(const RenderArgs& a);
 int run_claims(const ConfigFiles& config);
 // bless: rewrite the stored expectations from this run (cli/expectations.hpp).
+// option_matrix: the pipeline table under each memory-side option.
 // inputs: the pipeline table's (default: the sample workloads).
 int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool leave_out_only, bool bless,
-              const std::vector<std::string>& inputs);
+              bool option_matrix, const std::vector<std::string>& inputs);
 struct RegressArgs {
   std::vector<std::string> traces;  // empty: every trace under traces/
   int random = 0;                   // extra random triangles

@@ -83,6 +83,13 @@ int main(int argc, char** argv) {
       ->needs(pipeline_only)
       ->excludes(inputs);
 
+  bool bench_options = false;
+  bench->add_flag("--options", bench_options,
+                  "with --pipeline: the table under each memory-side option alone and all together (write-behind, "
+                  "prefetch, dirty bits, stolen VRAM cycles; default inputs: traces/accuracy_inputs.txt)")
+      ->needs(pipeline_only)
+      ->excludes("--bless");
+
   RegressArgs rg;
   CLI::App* regress = app.add_subcommand("regress", "RTL against the golden model, trace by trace");
   regress->add_option("traces", rg.traces, "traces (default: the triangle- and DDA-level traces of traces/workloads.txt)");
@@ -152,7 +159,7 @@ int main(int argc, char** argv) {
     if (drives_rtl) run_in_rtl_variant_if_needed(load_params(config), argv);
     if (*render) return run_render(ra);
     if (*claims) return run_claims(claims_config);
-    if (*bench) return run_bench(bench_config, bench_out, bench_pipeline, bench_leave_out, bench_bless, bench_inputs);
+    if (*bench) return run_bench(bench_config, bench_out, bench_pipeline, bench_leave_out, bench_bless, bench_options, bench_inputs);
     if (*regress) return run_regress(rg);
     if (*stress) return run_stress(st);
     if (*accuracy) return run_accuracy(ac);

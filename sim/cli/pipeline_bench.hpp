@@ -32,6 +32,13 @@ struct PipelineBench {
 PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir,
                                  bool bless = false, const std::vector<std::string>& inputs = {});
 
+// The same table under each memory-side option alone and all together
+// (write-behind, prefetch, dirty bits, stolen VRAM cycles): `bench
+// --pipeline --options`. Rows carry `options`, the set's name. Default
+// inputs: traces/accuracy_inputs.txt (each of 100,000 pixels or more).
+PipelineBench run_option_matrix_bench(const ConfigFiles& config, const std::string& out_dir,
+                                      const std::vector<std::string>& inputs = {});
+
 // The cost of the coupling and of the waveform ability, on the demo trace:
 // rtl in the pipeline, the bare Verilated harness, the pipeline keeping step
 // every tick, the traced build with almost nothing to dump, a 100 us window

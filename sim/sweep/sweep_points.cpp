@@ -10,7 +10,6 @@
 #include "config/params.hpp"
 #include "cost/hardware_cost.hpp"
 #include "io/sha256.hpp"
-#include "timing/backend_timing.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -34,12 +33,6 @@ json cost_json(const HardwareCost& c) {
           {"front_end_boards", c.front_end_boards},
           {"dda_clock_class", c.dda_clock_class},
           {"had_clock_class", c.had_clock_class}};
-}
-
-// What the chosen back end cannot run (approx's event model covers the
-// memory side as written; issue #19 extends it).
-std::string backend_refuses(const std::string& backend, const Params& p) {
-  return backend == "approx" ? unmodeled_options(p) : "";
 }
 
 }  // namespace
@@ -69,7 +62,6 @@ std::vector<SweepPoint> sweep_points(const SweepSpec& spec, const std::string& d
     try {
       const Params p = Params::from_files(files);
       pt.id = config_key(p);
-      pt.invalid = backend_refuses(spec.backend, p);
       pt.cost = cost_json(hardware_cost(p));
     } catch (const InputError& e) {
       std::string base_text;

@@ -55,18 +55,17 @@ grep -qE "^(PASS|FAIL): modeled .* Mpixel/s against the 20 Mpixel/s target" "$TM
 # 4. Refusals: exit 2, one line, no output.
 "$GIRTD" render traces/thesis/equilateral_200.trace --backend approx --out "$TMP/th" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 && $(wc -l < "$TMP/err") -eq 1 && ! -e "$TMP/th" ]] && ok || bad "thesis trace on approx: exit $rc"
-printf '{"had": {"prefetch": true}}\n' > "$TMP/pf.json"
-"$GIRTD" render traces/equilateral_200.trace --backend approx --config "$TMP/pf.json" --out "$TMP/pf" 2> "$TMP/err"; rc=$?
-[[ $rc -eq 2 && ! -e "$TMP/pf" ]] && grep -q "had.prefetch" "$TMP/err" && ok || bad "approx with prefetch: exit $rc"
-# Write-behind: approx models it; the frame is unchanged and approx's time is rtl's.
-printf '{"had": {"write_behind": true}}\n' > "$TMP/wb.json"
+# The memory-side options: approx models them all; the frame is unchanged
+# and approx's time is rtl's.
+printf '{"had": {"write_behind": true, "prefetch": true, "dirty_bits": true}, "vram": {"steal_every_ns": 1000.0}}\n' \
+  > "$TMP/mem.json"
 for b in approx rtl; do
-  "$GIRTD" render traces/equilateral_200.trace --backend $b --config "$TMP/wb.json" --out "$TMP/wb_$b" --quiet \
-    && ok || bad "$b with write-behind failed"
-  [[ "$(sha "$TMP/wb_$b")" == "$(sha "$TMP/eq_golden")" ]] && ok || bad "write-behind changed the frame on $b"
+  "$GIRTD" render traces/equilateral_200.trace --backend $b --config "$TMP/mem.json" --out "$TMP/mem_$b" --quiet \
+    && ok || bad "$b with the memory-side options failed"
+  [[ "$(sha "$TMP/mem_$b")" == "$(sha "$TMP/eq_golden")" ]] && ok || bad "the memory-side options changed the frame on $b"
 done
-[[ "$(jq .modeled_time_s "$TMP/wb_approx/report.json")" == "$(jq .modeled_time_s "$TMP/wb_rtl/report.json")" ]] \
-  && ok || bad "approx's write-behind time differs from rtl's"
+[[ "$(jq .modeled_time_s "$TMP/mem_approx/report.json")" == "$(jq .modeled_time_s "$TMP/mem_rtl/report.json")" ]] \
+  && ok || bad "approx's time with the memory-side options differs from rtl's"
 
 # 5. --dump from a timed back end equals golden's dump.
 "$GIRTD" render traces/z_overlap.trace --backend golden --out "$TMP/zg" --dump "dda=$TMP/zg.dda" --quiet && ok || bad "dump golden"

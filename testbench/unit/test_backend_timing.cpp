@@ -3,6 +3,8 @@
 // tick count.
 #include <catch2/catch.hpp>
 
+#include <vector>
+
 #include "rtl/timing_comparison.hpp"
 
 namespace girtd {
@@ -21,12 +23,25 @@ void check_trace(const std::string& path, const Params& p = Params::defaults()) 
   CHECK(c.model.had_vram_wait_ticks == c.rtl.had_vram_wait_ticks);
 }
 
-// The memory-side options the model covers, alone and together (run-time
-// inputs of the built RTL).
-void check_memory_options(const std::string& path) {
-  for (const auto& [wb, dirty] : {std::pair{true, false}, {false, true}, {true, true}}) {
-    INFO("write_behind " << wb << ", dirty_bits " << dirty);
-    check_trace(path, Params::with_overrides({{"had", {{"write_behind", wb}, {"dirty_bits", dirty}}}}, "test"));
+// The memory-side options, alone and together (run-time inputs of the
+// built RTL). Prefetch and stolen cycles step the memory side tick by tick
+// (models/timing/memory_side_ticks); a steal every 1 us (200 ticks) lands in
+// every state of the HAD, the frame clear and the flush.
+nlohmann::json options(const char* text) { return nlohmann::json::parse(text); }
+const std::vector<const char*> kEveryOption = {
+    R"({"had": {"write_behind": true}})",
+    R"({"had": {"dirty_bits": true}})",
+    R"({"had": {"write_behind": true, "dirty_bits": true}})",
+    R"({"had": {"prefetch": true}})",
+    R"({"had": {"prefetch": true, "write_behind": true}})",
+    R"({"had": {"prefetch": true, "dirty_bits": true}})",
+    R"({"vram": {"steal_every_ns": 1000.0}})",
+    R"({"had": {"write_behind": true, "prefetch": true, "dirty_bits": true}, "vram": {"steal_every_ns": 700.0}})"};
+
+void check_memory_options(const std::string& path, const std::vector<const char*>& list = kEveryOption) {
+  for (const char* o : list) {
+    INFO(o);
+    check_trace(path, Params::with_overrides(options(o), "test"));
   }
 }
 
@@ -41,18 +56,18 @@ TEST_CASE("timing model matches the RTL back end: transparent (blends)", "[timin
 }
 TEST_CASE("timing model matches the RTL back end: slivers", "[timing]") { check_trace("traces/sliver_fan.trace"); }
 TEST_CASE("timing model matches the RTL back end: demo", "[timing]") { check_trace("traces/demo.trace"); }
-TEST_CASE("timing model matches the RTL back end with write-behind and dirty bits: 200-pixel triangles", "[timing]") {
+TEST_CASE("timing model matches the RTL back end with every memory-side option: 200-pixel triangles", "[timing]") {
   check_memory_options("traces/equilateral_200.trace");
 }
-TEST_CASE("timing model matches the RTL back end with write-behind and dirty bits: z_overlap (Z rejections)",
+TEST_CASE("timing model matches the RTL back end with every memory-side option: z_overlap (Z rejections)",
           "[timing]") {
   check_memory_options("traces/z_overlap.trace");
 }
-TEST_CASE("timing model matches the RTL back end with write-behind and dirty bits: transparent", "[timing]") {
+TEST_CASE("timing model matches the RTL back end with every memory-side option: transparent", "[timing]") {
   check_memory_options("traces/transparent.trace");
 }
-TEST_CASE("timing model matches the RTL back end with write-behind and dirty bits: demo", "[timing]") {
-  check_memory_options("traces/demo.trace");
+TEST_CASE("timing model matches the RTL back end with every memory-side option: demo", "[timing]") {
+  check_memory_options("traces/demo.trace", {kEveryOption[2], kEveryOption[3], kEveryOption.back()});
 }
 
 }  // namespace girtd

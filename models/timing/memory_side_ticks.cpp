@@ -1,0 +1,235 @@
+#include "timing/memory_side_ticks.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace girtd {
+
+MemorySideTicks::MemorySideTicks(const Params& p)
+    : layout_(rtl_layout(p)),
+      access_(uint64_t(p.ticks(p.had_access_ns))),
+      blend_(uint64_t(p.ticks(p.had_blend_extra_ns))),
+      cycle_(std::max<uint64_t>(1, uint64_t(p.ticks(p.vram_cycle_ns)))),  // hw/vram: 0 ticks is 1
+      clear_ticks_(std::max<uint64_t>(1, uint64_t(p.vram_serial_transfers) *
+                                             uint64_t(p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)))),
+      steal_period_(uint64_t(p.ticks(p.vram_steal_every_ns))),
+      write_behind_(p.had_write_behind),
+      prefetch_(p.had_prefetch),
+      dirty_bits_(p.had_dirty_bits),
+      valid_(size_t(layout_.cache.pages), false),
+      dirty_(size_t(layout_.cache.pages), false),
+      page_(size_t(layout_.cache.pages), 0) {}
+
+void MemorySideTicks::push(uint32_t page, HadOutcome outcome, uint64_t tick) {
+  if (tick < now_) throw std::logic_error("MemorySideTicks: a pixel pushed in the past");
+  fifo_.push_back({tick, page, outcome});
+}
+
+bool MemorySideTicks::vram_busy() const {
+  const bool port_busy = vbusy_ && left_ != 1;
+  return port_busy || steals_owed_ != 0 || clear_pending_ || clear_in_;
+}
+
+bool MemorySideTicks::idle() const {
+  return state_ == State::kIdle && !flush_pending_ && !wb_pending_ && !pf_loading_ && fifo_.empty() && !vram_busy();
+}
+
+void MemorySideTicks::clear() { clear_in_ = true; }
+void MemorySideTicks::flush() { flush_in_ = true; }
+
+bool MemorySideTicks::quiet() const {
+  return state_ == State::kIdle && !flush_pending_ && !wb_pending_ && !pf_loading_ && fifo_count() == 0 && !vbusy_ &&
+         !clear_pending_ && !clear_in_ && !flush_in_ && steals_owed_ == 0;
+}
+
+void MemorySideTicks::run_until(uint64_t tick) {
+  while (now_ < tick) {
+    if (!quiet()) {
+      step();
+      continue;
+    }
+    // Nothing moves but the steal counter: up to the next pixel's arrival
+    // or the tick a stolen cycle comes due, whichever is first.
+    uint64_t k = tick - now_;
+    if (!fifo_.empty()) k = std::min(k, fifo_.back().tick + 1 - now_);
+    if (steal_period_) k = std::min(k, steal_period_ - 1 - steal_count_);
+    if (k == 0) {
+      step();
+      continue;
+    }
+    now_ += k;
+    if (steal_period_) steal_count_ += k;
+  }
+}
+
+void MemorySideTicks::step() {
+  // ---- this tick's signals, from the registers (hw/vram, hw/had) ----
+  const uint64_t in_fifo = fifo_count();
+  fifo_max_ = std::max(fifo_max_, in_fifo);
+  const Entry* head = in_fifo ? &fifo_.front() : nullptr;
+
+  const bool finishing = vbusy_ && left_ == 1;
+  const bool port_busy = vbusy_ && !finishing;
+  const bool steal_due = steals_owed_ != 0;
+  const bool vbusy_o = vram_busy();
+  const bool done = finishing && !clearing_ && !stealing_;
+
+  const size_t hslot = head ? slot_of(head->page) : 0;
+  const bool victim_valid = head && valid_[hslot];
+  const bool head_hit = victim_valid && page_[hslot] == head->page;
+  const bool must_write_back = victim_valid && (dirty_[hslot] || !dirty_bits_);
+  const bool head_in_pf = head && pf_page_ == head->page && (pf_valid_ || pf_loading_);
+  const size_t fslot = flush_slot_;
+  const bool flush_valid = valid_[fslot];
+  const bool flush_write_back = flush_valid && (dirty_[fslot] || !dirty_bits_);
+  const bool idle = state_ == State::kIdle;
+  const bool background_ok = idle || state_ == State::kAccess || state_ == State::kBlend;
+  const bool miss_go = idle && head && !head_hit && !(head_in_pf && pf_loading_) && !vbusy_o && !wb_pending_ &&
+                       !pf_loading_;
+  const bool flush_step = idle && flush_pending_ && !head && !vbusy_o && !wb_pending_ && !pf_loading_;
+  const bool wb_issue = background_ok && wb_pending_ && !vbusy_o;
+  const bool pf_issue = prefetch_ && background_ok && !idle && !wb_pending_ && !vbusy_o && !pf_valid_ &&
+                        !pf_loading_ && head && victim_valid && !head_hit;
+  const bool pop = idle && head && (head_hit || miss_go);
+  bool req = wb_issue || pf_issue;
+  switch (state_) {
+    case State::kIdle:
+      if (head && head_hit) break;
+      if (miss_go) req = req || (must_write_back && !write_behind_) || !(pf_valid_ && pf_page_ == head->page);
+      else if (flush_step && flush_write_back) req = true;
+      break;
+    case State::kWriteBack:
+    case State::kRefetch:
+      if ((state_ == State::kRefetch || done) && !use_pf_ && !vbusy_o) req = true;
+      break;
+    default:
+      break;
+  }
+  const bool cache_load = state_ == State::kFetch && (use_pf_ || done);
+  const bool cache_write =
+      (state_ == State::kAccess && count_ == 1 &&
+       (pix_.outcome == HadOutcome::kWritten || (pix_.outcome == HadOutcome::kBlended && blend_ == 0))) ||
+      (state_ == State::kBlend && count_ == 1);
+  const bool cache_invalidate = state_ == State::kFlush && (done || !flush_write_back);
+
+  // ---- the clock edge: hw/vram ----
+  const bool steal_comes_due = steal_period_ && steal_count_ + 1 >= steal_period_;
+  if (steal_period_) steal_count_ = steal_comes_due ? 0 : steal_count_ + 1;
+  steals_owed_ = steals_owed_ + unsigned(steal_comes_due && steals_owed_ != 0xFF) - unsigned(!port_busy && steal_due);
+  if (vbusy_) --left_;
+  if (finishing) vbusy_ = clearing_ = stealing_ = false;
+  const bool clear_was_pending = clear_pending_ || clear_in_;
+  if (clear_in_) clear_pending_ = true;
+  if (!port_busy && steal_due) {  // a stolen cycle goes first
+    vbusy_ = stealing_ = true;
+    left_ = cycle_;
+  } else if (!port_busy && clear_was_pending) {
+    clear_pending_ = false;
+    vbusy_ = clearing_ = true;
+    left_ = clear_ticks_;
+  } else if (!port_busy && req) {
+    vbusy_ = true;
+    left_ = cycle_;
+  } else if (req) {
+    throw std::logic_error("MemorySideTicks: a VRAM request while the port is busy");
+  }
+
+  // ---- the clock edge: the cache ----
+  if (cache_invalidate) valid_[fslot] = false;
+  if (cache_load) {
+    const size_t s = slot_of(pix_.page);
+    valid_[s] = true;
+    page_[s] = pix_.page;
+    dirty_[s] = false;
+  } else if (cache_write) {
+    dirty_[slot_of(pix_.page)] = true;
+  }
+
+  // ---- the clock edge: hw/had ----
+  auto next_flush_slot = [&] {
+    if (flush_slot_ + 1 == valid_.size()) {
+      flush_slot_ = 0;
+      flush_pending_ = false;
+      pf_valid_ = false;
+    } else {
+      ++flush_slot_;
+    }
+  };
+  if (flush_in_) flush_pending_ = true;
+  if (wb_issue) wb_pending_ = false;
+  const bool pf_arrives = pf_loading_ && done && background_ok;
+  if (pf_issue) {
+    pf_loading_ = true;
+    pf_page_ = head->page;
+  }
+  if (pf_arrives) {
+    pf_loading_ = false;
+    pf_valid_ = true;
+  }
+  if (!idle || pop) ++busy_ticks_;
+  if (state_ == State::kWriteBack || state_ == State::kRefetch || (state_ == State::kFetch && !use_pf_) ||
+      (idle && head && !head_hit && !pop))
+    ++vram_wait_ticks_;
+  switch (state_) {
+    case State::kIdle:
+      if (pop) {
+        pix_ = *head;
+        fifo_.pop_front();
+      }
+      if (pop && head_hit) {
+        state_ = State::kAccess;  // the pop tick is the access's first
+        count_ = access_ <= 2 ? 1 : access_ - 1;
+      } else if (miss_go) {
+        ++page_misses_;
+        use_pf_ = pf_valid_ && pf_page_ == pix_.page;
+        pf_valid_ = false;
+        if (must_write_back && !write_behind_) {
+          state_ = State::kWriteBack;
+        } else {
+          if (must_write_back) wb_pending_ = true;  // the old page waits in the write-behind register
+          state_ = State::kFetch;
+        }
+      } else if (flush_step) {
+        if (flush_valid) state_ = State::kFlush;
+        else next_flush_slot();
+      }
+      break;
+    case State::kWriteBack:
+      if (done) state_ = use_pf_ || !vbusy_o ? State::kFetch : State::kRefetch;
+      break;
+    case State::kRefetch:
+      if (!vbusy_o) state_ = State::kFetch;
+      break;
+    case State::kFetch:
+      if (use_pf_ || done) {
+        state_ = State::kAccess;
+        use_pf_ = false;
+        count_ = access_ == 0 ? 1 : access_;
+      }
+      break;
+    case State::kAccess:
+      if (count_ > 1) {
+        --count_;
+      } else if (pix_.outcome == HadOutcome::kBlended && blend_ > 0) {
+        state_ = State::kBlend;
+        count_ = blend_;
+      } else {
+        state_ = State::kIdle;
+      }
+      break;
+    case State::kBlend:
+      if (count_ > 1) --count_;
+      else state_ = State::kIdle;
+      break;
+    case State::kFlush:
+      if (done || !flush_write_back) {
+        state_ = State::kIdle;
+        next_flush_slot();
+      }
+      break;
+  }
+  clear_in_ = flush_in_ = false;
+  ++now_;
+}
+
+}  // namespace girtd
