@@ -34,6 +34,7 @@
 #include "sweep/sweep_points.hpp"
 #include "sweep/sweep_spec.hpp"
 #include "sweep/sweep_table.hpp"
+#include "sweep/yosys_cells.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -71,14 +72,10 @@ void write_json_atomically(const fs::path& p, const json& j) {
   fs::rename(tmp, p);
 }
 
-// What a row takes from its render's report.json.
-constexpr const char* kReportColumns[] = {"modeled_mpixels_per_s", "sustained_mpixels_per_s", "modeled_time_s",
-                                          "target_met", "bottleneck", "image_sha256", "wall_s"};
-
 json base_row(const Task& t) {
   json row = {{"point", t.point->id}, {"input", t.input}, {"valid", t.point->invalid.empty()}, {"rtl_agrees", nullptr}};
   for (const auto& [axis, v] : t.point->axis_values.items()) row[axis] = v;
-  for (const char* k : kReportColumns) row[k] = nullptr;
+  for (const ReportColumn& c : kReportColumns) row[c.name] = nullptr;
   if (!t.point->cost.is_null()) row.update(t.point->cost);
   if (!t.point->invalid.empty()) row["invalid"] = t.point->invalid;
   return row;
@@ -113,7 +110,7 @@ std::optional<json> run_task(const Task& t, const SweepSpec& spec, const fs::pat
     row["invalid"] = std::string(rc < 0 ? "the render crashed: " : "the render failed: ") + run.string() + ".log";
     return row;
   }
-  for (const char* k : kReportColumns) row[k] = r[k];
+  for (const ReportColumn& c : kReportColumns) row[c.name] = r.value(json::json_pointer(c.pointer), json());
   fs::remove_all(run);  // the frame is not kept: its SHA is
   fs::remove(run.string() + ".log");
   return row;
@@ -233,6 +230,9 @@ int run_sweep(const SweepArgs& a) {
   if (lock >= 0 && flock(lock, LOCK_EX | LOCK_NB) != 0)
     throw InputError("--out", 0, "another girtd sweep is running in " + out);
   const std::vector<SweepPoint> points = sweep_points(spec, out);
+  if (a.slice.empty() && !yosys_available())
+    std::fprintf(stderr, "warning: yosys is not installed: cost_yosys_dda_cells stays null (tools/girtd hw-cost "
+                         "installs it)\n");
   std::vector<Task> tasks;
   std::set<std::string> ids;  // two combinations can merge to one design: it runs once
   for (const SweepPoint& p : points)

@@ -10,6 +10,7 @@
 #include "config/params.hpp"
 #include "cost/hardware_cost.hpp"
 #include "io/sha256.hpp"
+#include "sweep/yosys_cells.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -63,6 +64,8 @@ std::vector<SweepPoint> sweep_points(const SweepSpec& spec, const std::string& d
       const Params p = Params::from_files(files);
       pt.id = config_key(p);
       pt.cost = cost_json(hardware_cost(p));
+      const std::optional<long> cells = dda_yosys_cells(p, points_dir.string());
+      pt.cost["cost_yosys_dda_cells"] = cells ? json(*cells) : json();
     } catch (const InputError& e) {
       std::string base_text;
       for (const std::string& b : spec.base) base_text += b + "\n";

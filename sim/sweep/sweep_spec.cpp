@@ -1,4 +1,5 @@
 #include "sweep/sweep_spec.hpp"
+#include "sweep/sweep_table.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -71,9 +72,8 @@ SweepSpec parse_sweep_spec(const std::string& text, const std::string& path) {
   // The axes first: what a spec is about, and what a fuzzer should reach.
   if (!j.contains("axes") || !j["axes"].is_object() || j["axes"].empty())
     throw fail(j.contains("axes") ? "axes" : "", "\"axes\" must be a non-empty object of axis: [values]");
-  static const std::set<std::string> reserved = {"point", "input", "valid", "invalid", "cost", "wall_s", "rtl_agrees",
-                                                 "modeled_mpixels_per_s", "sustained_mpixels_per_s", "modeled_time_s",
-                                                 "target_met", "bottleneck", "image_sha256"};
+  std::set<std::string> reserved = {"point", "input", "valid", "invalid", "cost", "rtl_agrees"};
+  for (const ReportColumn& c : kReportColumns) reserved.insert(c.name);
   std::map<std::string, std::string> key_axis;  // every key an axis sets, and which axis
   size_t points = 1;
   for (const auto& [name, values] : j["axes"].items()) {

@@ -140,17 +140,18 @@ SweepSummary summarize_sweep(const json& rows, const std::vector<std::string>& a
 }
 
 std::string sweep_csv(const json& rows, const std::vector<std::string>& axes) {
-  static const char* kColumns[] = {"point", "input", "valid", "modeled_mpixels_per_s", "sustained_mpixels_per_s",
-                                   "modeled_time_s", "target_met", "bottleneck", "cost", "cost_dda_chips",
-                                   "cost_fifo_chips", "cost_had_chips", "cost_vram_chips", "cost_board_chips",
-                                   "image_sha256", "wall_s", "rtl_agrees", "invalid"};
+  std::vector<std::string> columns = {"point", "input", "valid"};
+  for (const ReportColumn& c : kReportColumns) columns.push_back(c.name);
+  for (const char* c : {"cost", "cost_dda_chips", "cost_fifo_chips", "cost_had_chips", "cost_vram_chips",
+                        "cost_board_chips", "cost_yosys_dda_cells", "rtl_agrees", "invalid"})
+    columns.push_back(c);
   std::ostringstream o;
   for (const std::string& a : axes) o << csv_field(json(a)) << ",";
-  for (size_t i = 0; i < std::size(kColumns); ++i) o << kColumns[i] << (i + 1 < std::size(kColumns) ? "," : "\n");
+  for (size_t i = 0; i < columns.size(); ++i) o << columns[i] << (i + 1 < columns.size() ? "," : "\n");
   for (const json& r : rows) {
     for (const std::string& a : axes) o << csv_field(r.value(a, json())) << ",";
-    for (size_t i = 0; i < std::size(kColumns); ++i)
-      o << csv_field(r.value(kColumns[i], json())) << (i + 1 < std::size(kColumns) ? "," : "\n");
+    for (size_t i = 0; i < columns.size(); ++i)
+      o << csv_field(r.value(columns[i], json())) << (i + 1 < columns.size() ? "," : "\n");
   }
   return o.str();
 }

@@ -28,6 +28,9 @@ jq -e '(.points | length == 32) and ([.points[].point] | unique | length == 32)'
 jq -e '[.rows | group_by(.point)[] | length == 2] | all' "$J" >/dev/null && ok || bad "a point's rows have different names"
 jq -e '[.rows[] | select(.rtl_agrees != null)] | length == 4 and all(.rtl_agrees == true)' "$J" >/dev/null \
   && ok || bad "spot checks: $(jq -c '[.rows[] | select(.rtl_agrees != null) | [.point, .rtl_agrees]]' "$J")"
+# yosys sizes the DDA once per width set: no axis here changes a width.
+jq -e '[.rows[] | select(.valid) | .cost_yosys_dda_cells] | (.[0] > 1000) and (unique | length == 1)' "$J" >/dev/null \
+  && ok || bad "yosys cells: $(jq -c '[.rows[] | select(.valid) | .cost_yosys_dda_cells] | unique' "$J")"
 # Pages of 16 pixels, 16 x 1 or 4 x 4, read 16 cells at once: the same VRAM.
 jq -e '[.rows[] | select(.valid)] | group_by(.page | tostring) | map(.[0].cost_vram_chips) | unique | length == 1' "$J" \
   >/dev/null && ok || bad "page shapes of 16 pixels cost different VRAM"
