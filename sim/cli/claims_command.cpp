@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "claims/campaign_claims.hpp"
 #include "claims/dda_efficiency.hpp"
 #include "claims/ep_error.hpp"
 #include "claims/ep_precision.hpp"
@@ -32,10 +33,6 @@
 namespace girtd {
 namespace fs = std::filesystem;
 namespace {
-
-struct ClaimRow {
-  std::string claim, thesis, measured, verdict;
-};
 
 std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0) {
   char buf[256];
@@ -323,6 +320,7 @@ int run_claims(const ConfigFiles& config) {
   thesis_rows(p, rows);
   memory_rows(p, rows);
   preparer_rows(p, rows);
+  for (ClaimRow& r : campaign_claims()) rows.push_back(std::move(r));
   std::printf("| claim | thesis | measured | verdict |\n|---|---|---|---|\n");
   for (const ClaimRow& r : rows)
     std::printf("| %s | %s | %s | %s |\n", r.claim.c_str(), r.thesis.c_str(), r.measured.c_str(), r.verdict.c_str());
