@@ -40,6 +40,10 @@ TEST_CASE("hardware cost: write-behind adds a page register, ECL doubles the DDA
   const HardwareCost ecl = hardware_cost(Params::with_overrides({{"dda", {{"clock_ns", 25.0}}}}, "test"));
   CHECK(ecl.dda_clock_class == "ECL");
   CHECK(ecl.dda_chips == 2 * b.dda_chips);
+  // A blend faster than the thesis' 50 ns more makes the HAD ECL, like a faster access.
+  const HardwareCost blend = hardware_cost(Params::with_overrides({{"had", {{"blend_extra_ns", 25.0}}}}, "test"));
+  CHECK(blend.had_clock_class == "ECL");
+  CHECK(blend.had_chips == 2 * b.had_chips);
 }
 
 }  // namespace
