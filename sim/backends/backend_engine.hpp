@@ -17,6 +17,7 @@
 #include "dda/dda_engine.hpp"
 #include "dda/dda_params.hpp"
 #include "backends/prune_plan.hpp"
+#include "backends/screen_maps.hpp"
 #include "backends/sampled_timing.hpp"
 #include "had/had.hpp"
 #include "io/png_io.hpp"
@@ -57,6 +58,8 @@ class BackendEngine {
   virtual std::vector<uint16_t> z_plane() const = 0;
   // What the simulator may leave out (backends/prune_plan.hpp), before the first frame.
   virtual void prune(const PrunePlan& plan) { (void)plan; }
+  // Where on the screen it spent its effort (report.html's heat maps).
+  virtual std::optional<ScreenMaps> screen_maps() const { return std::nullopt; }
   // Waveforms (rtl only): the RTL to record, and a call on every tick.
   virtual BackendRtl* rtl() { return nullptr; }
 };

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "backends/sampled_timing.hpp"
+#include "backends/screen_maps.hpp"
 #include "dda/dda_engine.hpp"
 #include "dda/dda_preparer.hpp"
 #include "frontend/frontend_counts.hpp"
@@ -27,6 +28,14 @@ struct StageStats {
   std::optional<uint64_t> fifo_in_max;  // most items ever in the FIFO in front of it
   // Timed front-end stages: when each frame began and ended (modeled s).
   std::vector<double> frame_begin_s, frame_end_s;
+  // Timed back ends, for the report page's timelines: the SystemC stages'
+  // starved, busy and blocked seconds per bin of `series_bin_s`, and the
+  // FIFO in front's largest occupancy per bin of `fifo_in_bin_s`
+  // (sim/pipeline/time_series.hpp). Empty where not sampled.
+  double series_bin_s = 0;
+  std::vector<std::array<double, 3>> series;
+  double fifo_in_bin_s = 0;
+  std::vector<double> fifo_in_series;
 };
 
 // A stage of an untimed back end: items only.
@@ -66,6 +75,7 @@ struct RunStats {
   std::vector<StageStats> stages;
   std::optional<PipelineTiming> timing;
   std::optional<SamplingStats> sampling;  // approx with sampled timing (render --sample-timing)
+  std::optional<ScreenMaps> maps;         // the timed back ends (report.html's heat maps)
   double wall_s = 0;
 };
 

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "backends/render_session.hpp"
 #include "pipeline/pipeline.hpp"
@@ -16,6 +17,7 @@
 #include "io/png_io.hpp"
 #include "report/limit_warnings.hpp"
 #include "report/report.hpp"
+#include "report/report_page.hpp"
 #include "io/sha256.hpp"
 #include "io/trace_reader.hpp"
 #include "backends/front_end_runner.hpp"
@@ -177,6 +179,12 @@ int run_render(const RenderArgs& a) {
   if (ctx.backend == "rtl") ctx.rtl_build = built_rtl_key();
   ctx.front_end_passes = front_end_passes();
   ctx.left_out = left_out(out.stats);
+  const std::optional<ChartLibrary> charts = load_chart_library();
+  if (!charts) {
+    const char* w = "report.html has no charts: the chart library is not installed (tools/girtd installs it)";
+    std::fprintf(stderr, "warning: %s\n", w);
+    ctx.warnings.push_back(w);
+  }
   const nlohmann::json report = make_report(ctx, out.stats, params);
 
   OutputSet files(dir);
@@ -190,6 +198,9 @@ int run_render(const RenderArgs& a) {
     files.add("z.png", [&](const std::string& p) { write_png_gray16(p, out.shown.width, out.shown.height, out.z); });
   files.add_text("report.json", report.dump(2) + "\n");
   files.add_text("report.md", report_markdown(report));
+  files.add("report.html", [&](const std::string& p) {
+    std::ofstream(p) << report_html(report_page_data(report, out.stats), png_rgb_bytes(out.shown), out.stats, charts);
+  });
   files.commit();
 
   if (!a.quiet) {

@@ -3,6 +3,7 @@
 #include <png.h>
 
 #include <cstring>
+#include <stdexcept>
 #include <string>
 
 #include "common/input_error.hpp"
@@ -44,6 +45,23 @@ void write_png_rgb(const std::string& path, const RgbImage& img) {
   image.height = img.height;
   image.format = PNG_FORMAT_RGB;
   write_image(path, image, img.rgb.data(), 0);
+}
+
+std::string png_rgb_bytes(const RgbImage& img) {
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = img.width;
+  image.height = img.height;
+  image.format = PNG_FORMAT_RGB;
+  png_alloc_size_t size = 0;  // first the size, then the bytes
+  if (!png_image_write_to_memory(&image, nullptr, &size, 0, img.rgb.data(), 0, nullptr))
+    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
+  std::string out(size, '\0');
+  if (!png_image_write_to_memory(&image, out.data(), &size, 0, img.rgb.data(), 0, nullptr))
+    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
+  out.resize(size);
+  return out;
 }
 
 void write_png_gray16(const std::string& path, int width, int height, const std::vector<uint16_t>& values) {

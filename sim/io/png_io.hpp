@@ -14,6 +14,8 @@ struct RgbImage {
 
 // Throws InputError(path, 0, ...) when the file cannot be written or read.
 void write_png_rgb(const std::string& path, const RgbImage& img);
+// The same PNG as bytes (for pages that inline their pictures).
+std::string png_rgb_bytes(const RgbImage& img);
 void write_png_gray16(const std::string& path, int width, int height, const std::vector<uint16_t>& values);
 RgbImage read_png_rgb(const std::string& path);
 // A file write_png_gray16 wrote (z.png), value for value.

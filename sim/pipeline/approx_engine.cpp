@@ -16,7 +16,7 @@ class ApproxEngine : public BackendEngine {
  public:
   ApproxEngine(const Params& p, std::optional<double> sample_rate)
       : period_ticks_(static_cast<uint64_t>(p.ticks(p.dda_clock_ns))), dda_(p), fb_(p.screen_width, p.screen_height, static_cast<uint16_t>(p.depth_clear)), had_(fb_, p.one_minus_nf),
-        timing_(p) {
+        timing_(p), maps_(p) {
     if (sample_rate) sampler_.emplace(*sample_rate);
   }
   void prune(const PrunePlan& plan) override { dda_.skip_unreachable_wraps(plan.unreachable_wraps); }
@@ -26,6 +26,7 @@ class ApproxEngine : public BackendEngine {
     fb_.clear_back(s.background);
     had_.set_drop_partial(s.qq);
     timing_.begin_frame();
+    maps_.begin_frame();
   }
   void draw(const DdaParams& d) override {
     if (!sampler_) return simulate(d);
@@ -49,8 +50,10 @@ class ApproxEngine : public BackendEngine {
     timing_.begin_triangle();
     const DdaRunStats st = dda_.run(d, [&](const DdaEmit& e) {
       timing_.pixel({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel, d.layer, e.covered)});
+      maps_.pixel(e.pixel.x, e.pixel.y);
     });
     timing_.end_triangle(st.cycles);
+    maps_.end_triangle(st.cycles, st.emitted);
     accumulate(r_.dda, st);
     ++r_.triangles_drawn;
     r_.pixels_generated += st.emitted;
@@ -74,6 +77,7 @@ class ApproxEngine : public BackendEngine {
     if (sampler_) r.sampling = sampler_->stats();
     return r;
   }
+  std::optional<ScreenMaps> screen_maps() const override { return maps_.maps(); }
   RgbImage shown() const override { return shown_image(fb_); }
   std::vector<uint16_t> z_plane() const override { return fb_.z_plane(); }
 
@@ -85,6 +89,7 @@ class ApproxEngine : public BackendEngine {
   BackendTimingModel timing_;
   BackendResult r_;
   std::optional<TriangleSampler> sampler_;
+  ScreenMapRecorder maps_;
 };
 
 }  // namespace

@@ -106,7 +106,7 @@ void BackendStage::run() {
     const uint64_t before = engine_.now_tick();  // the run's end, if the next token is the last
     sync_to(engine_.ready_tick());
     const Token<DdaParams> tok = next_token();
-    in_fifo_.pop();
+    in_fifo_.pop(sc_time_stamp().to_seconds());
     frame_ = tok.frame;
     switch (tok.kind) {
       case TokenKind::kFrameBegin:

@@ -4,6 +4,15 @@
 #include "timing/stage_costs.hpp"
 
 namespace girtd {
+namespace {
+
+void take_fifo_series(const FifoActivity& f, StageStats& st) {
+  st.fifo_in_bin_s = f.occupancy.bin_s();
+  st.fifo_in_series.clear();
+  for (const auto& bin : f.occupancy.bins()) st.fifo_in_series.push_back(bin[0]);
+}
+
+}  // namespace
 
 void PipelineElaboration::collect(RunStats& s) const {
   const BackendResult be = engine_->result();
@@ -15,6 +24,7 @@ void PipelineElaboration::collect(RunStats& s) const {
   s.had = be.had;
   s.dda = be.dda;
   s.sampling = be.sampling;
+  s.maps = engine_->screen_maps();
   s.frames = settings_.size();
   if (preparer_) s.preparer = preparer_->counts();
   if (polygon_source_) {
@@ -40,6 +50,9 @@ void PipelineElaboration::collect(RunStats& s) const {
     st.fifo_in_max = in_fifo_.at(a.get())->max_occupancy;
     st.frame_begin_s = a->frame_begin_s;
     st.frame_end_s = a->frame_end_s;
+    st.series_bin_s = a->series.bin_s();
+    st.series = a->series.bins();
+    take_fifo_series(*in_fifo_.at(a.get()), st);
     s.stages.push_back(st);
   }
   const double clock_s = p_.dda_clock_ns * 1e-9;
@@ -51,6 +64,7 @@ void PipelineElaboration::collect(RunStats& s) const {
   dda.blocked_s = double(be.dda_wait_ticks) * tick_s;
   dda.stall_s = *dda.starved_s + *dda.blocked_s;
   dda.fifo_in_max = in_fifo_.at(back_activity_)->max_occupancy;
+  take_fifo_series(*in_fifo_.at(back_activity_), dda);
   s.stages.push_back(dda);
   StageStats had;
   had.name = "had";

@@ -26,7 +26,7 @@ class SourceStage : public sc_core::sc_module {
  private:
   void put(const Token<T>& t) {
     out.write(t);
-    out_fifo_.push();
+    out_fifo_.push(sc_core::sc_time_stamp().to_seconds());
   }
   void run() {
     for (size_t f = 0; f < frames_.size(); ++f) {

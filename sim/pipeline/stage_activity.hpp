@@ -6,16 +6,24 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/time_series.hpp"
+
 namespace girtd {
 
+// `t_s`: the modeled time of the push or pop (the report's occupancy timeline).
 struct FifoActivity {
   uint64_t pushed = 0, popped = 0;
   uint64_t max_occupancy = 0;
-  void push() {
+  FifoSeries occupancy{true};
+  void push(double t_s) {
     ++pushed;
     if (pushed - popped > max_occupancy) max_occupancy = pushed - popped;
+    occupancy.note_max(0, t_s, double(pushed - popped));
   }
-  void pop() { ++popped; }
+  void pop(double t_s) {
+    ++popped;
+    occupancy.note_max(0, t_s, double(pushed - popped));
+  }
 };
 
 enum class StageState : uint8_t { kStarved, kBusy, kBlocked };
@@ -29,6 +37,7 @@ struct StageActivity {
   double busy_s = 0;     // computing
   double starved_s = 0;  // waiting for an item (from time 0: the pipeline's fill counts)
   double blocked_s = 0;  // waiting for room in the next FIFO
+  StageSeries series;    // the three over modeled time (starved, busy, blocked per bin)
   // Modeled time the stage took each frame's begin marker in and handed its
   // end marker on: frames overlap where one's begin precedes another's end.
   std::vector<double> frame_begin_s, frame_end_s;

@@ -51,8 +51,10 @@ class TimedStage : public sc_core::sc_module {
       a_.state = StageState::kStarved;
       const Token<In> tok = in.read();
       a_.state = StageState::kBusy;
-      in_fifo_.pop();
-      a_.starved_s += (sc_core::sc_time_stamp() - t0).to_seconds();
+      const double now = sc_core::sc_time_stamp().to_seconds();
+      in_fifo_.pop(now);
+      a_.starved_s += now - t0.to_seconds();
+      a_.series.add_span(size_t(StageState::kStarved), t0.to_seconds(), now);
       work_.clear();
       switch (tok.kind) {
         case TokenKind::kItem:
@@ -85,7 +87,9 @@ class TimedStage : public sc_core::sc_module {
         const double busy = s.flops / rate_;
         a_.flops += s.flops;
         a_.busy_s += busy;
+        const double from = sc_core::sc_time_stamp().to_seconds();
         wait(sc_core::sc_time(busy, sc_core::SC_SEC));
+        a_.series.add_span(size_t(StageState::kBusy), from, sc_core::sc_time_stamp().to_seconds());
       }
       if (s.out) {
         ++a_.emitted;
@@ -99,8 +103,10 @@ class TimedStage : public sc_core::sc_module {
     a_.state = StageState::kBlocked;
     out.write(t);
     a_.state = StageState::kBusy;
-    out_fifo_.push();
-    a_.blocked_s += (sc_core::sc_time_stamp() - t0).to_seconds();
+    const double now = sc_core::sc_time_stamp().to_seconds();
+    out_fifo_.push(now);
+    a_.blocked_s += now - t0.to_seconds();
+    a_.series.add_span(size_t(StageState::kBlocked), t0.to_seconds(), now);
   }
 
   double rate_;

@@ -1,0 +1,38 @@
+// report.html: one self-contained page of a render's report that opens
+// offline (everything inlined): the frame and, on approx, two heat maps
+// beside it (page misses per cache page; the share of DDA clocks wasted by
+// the last triangle drawn at each pixel), the throughput verdict and where
+// the time went, a timeline per SystemC stage (busy, starved, blocked over
+// modeled time) and the occupancy of the FIFO in front of each, the pixel
+// accounting, warnings, numerics, what was left out, the configuration.
+// Charts: uPlot (npm, sim/report/web), installed into the build by
+// tools/girtd and inlined here; nothing is fetched when the page opens.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "backends/run_stats.hpp"
+
+namespace girtd {
+
+// The chart library's script and style, from the build's web folder;
+// nullopt when tools/girtd has not installed it (the page then has no
+// charts, and the render warns).
+struct ChartLibrary {
+  std::string script, style;
+};
+std::optional<ChartLibrary> load_chart_library();
+
+// The page's data: the report, the timelines (per stage: its bins'
+// starved, busy and blocked seconds and its input FIFO's peak occupancy),
+// the page misses per cache page (approx).
+nlohmann::json report_page_data(const nlohmann::json& report, const RunStats& s);
+
+// `s.maps`' DDA waste map is inlined as a picture (its pixels coloured here).
+std::string report_html(const nlohmann::json& page_data, const std::string& frame_png, const RunStats& s,
+                        const std::optional<ChartLibrary>& charts);
+
+}  // namespace girtd
