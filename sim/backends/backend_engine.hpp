@@ -40,6 +40,11 @@ struct BackendResult {
   std::optional<SamplingStats> sampling;  // approx with sampled timing
 };
 
+// The counters a timeline reads often (cheap to read, unlike result()).
+struct BackendCounters {
+  uint64_t dda_clocks = 0, dda_wait_ticks = 0, had_busy_ticks = 0;
+};
+
 class BackendEngine {
  public:
   virtual ~BackendEngine() = default;
@@ -54,6 +59,7 @@ class BackendEngine {
   virtual void end_frame() = 0;  // drain, write the cache back, swap
   virtual uint64_t now_tick() const = 0;
   virtual BackendResult result() const = 0;
+  virtual BackendCounters counters() const = 0;
   virtual RgbImage shown() const = 0;
   virtual std::vector<uint16_t> z_plane() const = 0;
   // What the simulator may leave out (backends/prune_plan.hpp), before the first frame.

@@ -64,6 +64,10 @@ class ApproxEngine : public BackendEngine {
     fb_.swap();
   }
   uint64_t now_tick() const override { return timing_.timing().ticks; }
+  BackendCounters counters() const override {
+    const BackendTiming& t = timing_.timing();
+    return {t.dda_clocks, t.dda_wait_clocks * period_ticks_, t.had_busy_ticks};
+  }
   BackendResult result() const override {
     BackendResult r = r_;
     const BackendTiming& t = timing_.timing();

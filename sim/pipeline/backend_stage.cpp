@@ -8,10 +8,10 @@ using sc_core::sc_time;
 using sc_core::sc_time_stamp;
 
 BackendStage::BackendStage(const sc_core::sc_module_name& name, BackendEngine& engine,
-                           const std::vector<FrameSettings>& frames, double tick_ns, StageActivity& activity,
-                           FifoActivity& in_fifo, FrameDone frame_done, Progress progress)
+                           const std::vector<FrameSettings>& frames, double tick_ns, double dda_clock_ns,
+                           StageActivity& activity, FifoActivity& in_fifo, FrameDone frame_done, Progress progress)
     : sc_module(name), engine_(engine), frames_(frames), tick_ns_(tick_ns), a_(activity), in_fifo_(in_fifo),
-      frame_done_(std::move(frame_done)), progress_(std::move(progress)) {
+      frame_done_(std::move(frame_done)), progress_(std::move(progress)), timeline_(tick_ns * 1e-9, dda_clock_ns * 1e-9) {
   SC_THREAD(run);
   SC_THREAD(sample);
 }
@@ -101,6 +101,7 @@ void BackendStage::run() {
     const uint64_t from = engine_.now_tick();
     work();
     frame_ticks_ += engine_.now_tick() - from;
+    timeline_.read(engine_.now_tick(), engine_.counters());
   };
   for (;;) {
     const uint64_t before = engine_.now_tick();  // the run's end, if the next token is the last
@@ -115,6 +116,7 @@ void BackendStage::run() {
       case TokenKind::kItem:
         ++a_.items;
         engine_.draw(tok.item);
+        timeline_.read(engine_.now_tick(), engine_.counters());
         if (progress_ && (++triangles & 15) == 0) progress_(tok.frame, triangles, at(engine_.now_tick()).to_seconds());
         break;
       case TokenKind::kFrameEnd:

@@ -13,6 +13,7 @@
 
 #include "dda/dda_params.hpp"
 #include "backends/backend_engine.hpp"
+#include "pipeline/counter_timeline.hpp"
 #include "pipeline/stage_activity.hpp"
 #include "pipeline/token.hpp"
 #include "rtl/backend_rtl.hpp"
@@ -31,8 +32,8 @@ class BackendStage : public sc_core::sc_module {
 
   SC_HAS_PROCESS(BackendStage);
   BackendStage(const sc_core::sc_module_name& name, BackendEngine& engine, const std::vector<FrameSettings>& frames,
-               double tick_ns, StageActivity& activity, FifoActivity& in_fifo, FrameDone frame_done,
-               Progress progress);
+               double tick_ns, double dda_clock_ns, StageActivity& activity, FifoActivity& in_fifo,
+               FrameDone frame_done, Progress progress);
 
   bool finished() const { return finished_; }
   // Record a waveform: every tick in the window is dumped once SystemC
@@ -48,6 +49,8 @@ class BackendStage : public sc_core::sc_module {
   // Per frame: the tick its swap ended, and the pixels generated up to then.
   const std::vector<uint64_t>& frame_end_ticks() const { return frame_end_ticks_; }
   const std::vector<uint64_t>& frame_end_pixels() const { return frame_end_pixels_; }
+  // The DDA's and the HAD's busy / starved / blocked over modeled time.
+  const CounterTimeline& timeline() const { return timeline_; }
 
  private:
   void run();
@@ -73,6 +76,7 @@ class BackendStage : public sc_core::sc_module {
   uint64_t end_tick_ = 0;
   uint64_t frame_ticks_ = 0;
   std::vector<uint64_t> frame_end_ticks_, frame_end_pixels_;
+  CounterTimeline timeline_;
 };
 
 }  // namespace girtd

@@ -106,7 +106,7 @@ void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
                    total_items_ ? 100.0 * double(done) / double(total_items_) : 0.0, drawn, modeled_s * 1e3, wall);
       progress_printed_ = true;
     };
-  back_end_ = std::make_unique<BackendStage>("back_end", *engine_, settings_, p_.base_tick_ns, a, in_record,
+  back_end_ = std::make_unique<BackendStage>("back_end", *engine_, settings_, p_.base_tick_ns, p_.dda_clock_ns, a, in_record,
                                              std::move(done), std::move(progress));
   back_end_->in(in);
   if (p_.pipeline_rtl_sync_every_tick && engine_->rtl()) back_end_->sync_every_tick(true);

@@ -65,6 +65,8 @@ void PipelineElaboration::collect(RunStats& s) const {
   dda.stall_s = *dda.starved_s + *dda.blocked_s;
   dda.fifo_in_max = in_fifo_.at(back_activity_)->max_occupancy;
   take_fifo_series(*in_fifo_.at(back_activity_), dda);
+  dda.series_bin_s = back_end_->timeline().dda().bin_s();
+  dda.series = back_end_->timeline().dda().bins();
   s.stages.push_back(dda);
   StageStats had;
   had.name = "had";
@@ -74,6 +76,8 @@ void PipelineElaboration::collect(RunStats& s) const {
   had.blocked_s = 0.0;
   had.stall_s = *had.starved_s;
   had.fifo_in_max = be.fifo_max;
+  had.series_bin_s = back_end_->timeline().had().bin_s();
+  had.series = back_end_->timeline().had().bins();
   s.stages.push_back(had);
 
   PipelineTiming t;

@@ -25,6 +25,7 @@ class ScreenMappedEngine : public BackendEngine {
   void end_frame() override { inner_->end_frame(); }
   uint64_t now_tick() const override { return inner_->now_tick(); }
   BackendResult result() const override { return inner_->result(); }
+  BackendCounters counters() const override { return inner_->counters(); }
   RgbImage shown() const override { return inner_->shown(); }
   std::vector<uint16_t> z_plane() const override { return inner_->z_plane(); }
   void prune(const PrunePlan& plan) override {

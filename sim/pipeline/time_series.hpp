@@ -26,13 +26,14 @@ class TimeSeries {
   double bin_s() const { return bin_s_; }
   const std::vector<Bin>& bins() const { return bins_; }
 
-  // Spreads the span [t0, t1) of channel `c` over the bins it covers.
-  void add_span(size_t c, double t0, double t1) {
+  // Spreads the span [t0, t1) of channel `c` over the bins it covers; with
+  // `weight` w, w seconds per second of the span (a share of it).
+  void add_span(size_t c, double t0, double t1, double weight = 1.0) {
     if (t1 <= t0) return;
     grow_to(t1);
     for (size_t i = index(t0); t0 < t1; ++i) {
       const double end = std::min(t1, double(i + 1) * bin_s_);
-      bins_[std::min(i, bins_.size() - 1)][c] += end - t0;
+      bins_[std::min(i, bins_.size() - 1)][c] += (end - t0) * weight;
       t0 = end;
     }
   }

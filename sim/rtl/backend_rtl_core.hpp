@@ -147,6 +147,10 @@ class BackendRtlCore final : public BackendRtl {
   uint64_t now_tick() const override { return ticks_; }
 
   // The RTL's own counters (ports), and the DDA clocks per state seen on them.
+  BackendCounters counters() const override {
+    const Model& t = *top_;
+    return {t.dda_clocks_o, t.dda_wait_ticks_o, t.had_busy_ticks_o};
+  }
   BackendResult result() const override {
     const Model& t = *top_;
     BackendResult r;
