@@ -181,8 +181,8 @@ int run_render(const RenderArgs& a) {
   ctx.left_out = left_out(out.stats);
   const std::optional<ChartLibrary> charts = load_chart_library();
   if (!charts) {
-    const char* w = "report.html has no charts: the chart library is not installed (tools/girtd installs it)";
-    std::fprintf(stderr, "warning: %s\n", w);
+    const std::string w = std::string("report.html: ") + kNoChartLibrary;
+    std::fprintf(stderr, "warning: %s\n", w.c_str());
     ctx.warnings.push_back(w);
   }
   const nlohmann::json report = make_report(ctx, out.stats, params);

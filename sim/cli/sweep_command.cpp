@@ -35,6 +35,7 @@
 #include "sweep/sweep_spec.hpp"
 #include "sweep/sweep_table.hpp"
 #include "sweep/yosys_cells.hpp"
+#include "report/sweep_page.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -333,10 +334,13 @@ int run_sweep(const SweepArgs& a) {
                                       .dump(2) + "\n");
   files.add_text("results.csv", sweep_csv(rows, axes));
   files.add_text("sweep.md", "# girtd sweep " + a.spec + "\n\n" + summary.markdown);
+  const std::optional<ChartLibrary> charts = load_chart_library();
+  if (!charts) std::fprintf(stderr, "warning: sweep.html: %s\n", kNoChartLibrary);
+  files.add_text("sweep.html", sweep_html(a.spec, summary.headline, summary.points, axes, base.target_mpixels_per_s, charts));
   files.commit();
   std::fputs(summary.headline.c_str(), stdout);
   const int plot = run_process({"/usr/bin/python3", std::string(GIRTD_SOURCE_DIR) + "/tools/sweep_plots.py", out}, false);
-  std::printf("wrote %s, results.csv, sweep.md%s\n", files.path("results.json").c_str(), plot == 0 ? " and the plots" : "");
+  std::printf("wrote %s, results.csv, sweep.md, sweep.html%s\n", files.path("results.json").c_str(), plot == 0 ? " and the plots" : "");
   if (plot != 0) std::fprintf(stderr, "warning: the plot failed (python3-matplotlib; tools/girtd installs it)\n");
   if (disagreements) std::printf("%d spot check(s) disagree with rtl\n", disagreements);
   return disagreements ? 1 : 0;

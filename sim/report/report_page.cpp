@@ -1,53 +1,19 @@
 #include "report/report_page.hpp"
 
-#include <openssl/evp.h>
-
 #include <algorithm>
 #include <fstream>
 #include <sstream>
 
 #include "io/png_io.hpp"
+#include "report/page_parts.hpp"
 
 namespace girtd {
 namespace {
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "";
-  std::ostringstream o;
-  o << in.rdbuf();
-  return o.str();
-}
-
-std::string html_text(const std::string& s) {
-  std::string out;
-  for (char c : s) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-  return out;
-}
-
-std::string base64(const std::string& bytes) {
-  std::string out(4 * ((bytes.size() + 2) / 3) + 1, '\0');
-  const int n = EVP_EncodeBlock(reinterpret_cast<unsigned char*>(out.data()),
-                                reinterpret_cast<const unsigned char*>(bytes.data()), int(bytes.size()));
-  out.resize(size_t(n));
-  return out;
-}
-
-// Inside <script>: a "</" would end the element.
-std::string script_safe(std::string text) {
-  for (size_t at = 0; (at = text.find("</", at)) != std::string::npos; at += 3) text.replace(at, 2, "<\\/");
-  return text;
-}
 
 // The page's own script: builds the tables from the data and the charts
 // with uPlot, and records on <body> what a test reads back (errors seen,
 // and per chart the sums of its series).
 constexpr const char* kPageScript = R"JS(
-const errors = [];
-window.addEventListener('error', e => errors.push(String(e.message)));
-const consoleError = console.error;
-console.error = (...a) => { errors.push(a.map(String).join(' ')); consoleError(...a); };
-const data = JSON.parse(document.getElementById('girtd-data').textContent);
 const r = data.report;
 const el = (tag, text, cls) => { const e = document.createElement(tag); if (text !== undefined) e.textContent = text; if (cls) e.className = cls; return e; };
 function table(rows, head) {
@@ -141,20 +107,10 @@ function build() {
     }
   }
 }
-try { build(); } catch (e) { errors.push(String(e)); }
-document.body.dataset.errors = errors.length;
-document.body.dataset.errorText = errors.join(' | ');
-document.body.dataset.ready = '1';
+build();
 )JS";
 
-constexpr const char* kPageStyle = R"CSS(
-body { font-family: sans-serif; margin: 1em 2em; color: #222; }
-h1 { font-size: 1.4em; } h2 { font-size: 1.15em; margin-top: 1.5em; } h3 { font-size: 1em; margin: 0.5em 0 0; }
-table { border-collapse: collapse; margin: 0.5em 0; } td, th { border: 1px solid #ccc; padding: 2px 8px; text-align: left; }
-.pass { color: #1b7837; font-weight: bold; } .fail { color: #b2182b; font-weight: bold; }
-.warning { color: #8c510a; } .frame { width: 512px; image-rendering: pixelated; border: 1px solid #888; }
-.row { display: flex; gap: 2em; flex-wrap: wrap; } pre { background: #f6f6f6; padding: 0.5em; max-height: 20em; overflow: auto; }
-)CSS";
+
 
 // The DDA waste map's pixels: dark grey where nothing was drawn, else a
 // blue -> yellow -> red ramp over 0 -> 50 -> 100 % of the clocks wasted.
@@ -195,13 +151,6 @@ std::string heat_maps_html(const RunStats& s) {
 
 }  // namespace
 
-std::optional<ChartLibrary> load_chart_library() {
-  const std::string dist = std::string(GIRTD_WEB_DIR) + "/node_modules/uplot/dist/";
-  ChartLibrary lib{read_file(dist + "uPlot.iife.min.js"), read_file(dist + "uPlot.min.css")};
-  if (lib.script.empty() || lib.style.empty()) return std::nullopt;
-  return lib;
-}
-
 nlohmann::json report_page_data(const nlohmann::json& report, const RunStats& s) {
   nlohmann::json timeline = nlohmann::json::array();
   for (const StageStats& st : s.stages)
@@ -219,11 +168,9 @@ std::string report_html(const nlohmann::json& page_data, const std::string& fram
                         const std::optional<ChartLibrary>& charts) {
   const nlohmann::json& r = page_data.at("report");
   std::ostringstream o;
-  o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>girtd render: "
-    << html_text(r.value("input", std::string())) << " on " << html_text(r.value("backend", std::string())) << "</title>\n<style>"
-    << kPageStyle << (charts ? charts->style : "") << "</style>\n";
-  if (charts) o << "<script>" << script_safe(charts->script) << "</script>\n";
-  o << "</head><body>\n<h1>girtd render</h1>\n<p id=\"verdict\"></p>\n"
+  o << page_head("girtd render: " + r.value("input", std::string()) + " on " + r.value("backend", std::string()),
+                 charts)
+    << "<h1>girtd render</h1>\n<p id=\"verdict\"></p>\n"
     << "<div class=\"row\"><div><h2>Frame</h2><img class=\"frame\" alt=\"the frame\" src=\"data:image/png;base64,"
     << base64(frame_png) << "\"></div>\n" << heat_maps_html(s) << "<div><h2>Run</h2><div id=\"run\"></div><div id=\"time\"></div>"
     << "<div id=\"pixels\"></div></div></div>\n"
@@ -231,8 +178,7 @@ std::string report_html(const nlohmann::json& page_data, const std::string& fram
     << "<p>Drag to zoom (all charts follow), double-click to reset.</p><div id=\"timelines\"></div>\n"
     << "<h2>Warnings</h2><div id=\"warnings\"></div>\n<h2>Numerics</h2><div id=\"numerics\"></div>\n"
     << "<h2>Left out</h2><div id=\"left_out\"></div>\n<h2>Configuration</h2><pre id=\"config\"></pre>\n"
-    << "<script id=\"girtd-data\" type=\"application/json\">" << script_safe(page_data.dump()) << "</script>\n"
-    << "<script>" << kPageScript << "</script>\n</body></html>\n";
+    << page_tail(page_data.dump(), kPageScript);
   return o.str();
 }
 

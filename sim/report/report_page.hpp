@@ -15,16 +15,9 @@
 #include <nlohmann/json.hpp>
 
 #include "backends/run_stats.hpp"
+#include "report/page_parts.hpp"
 
 namespace girtd {
-
-// The chart library's script and style, from the build's web folder;
-// nullopt when tools/girtd has not installed it (the page then has no
-// charts, and the render warns).
-struct ChartLibrary {
-  std::string script, style;
-};
-std::optional<ChartLibrary> load_chart_library();
 
 // The page's data: the report, the timelines (per stage: its bins'
 // starved, busy and blocked seconds and its input FIFO's peak occupancy),

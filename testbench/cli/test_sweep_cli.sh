@@ -38,6 +38,12 @@ head -1 "$TMP/a/results.csv" | grep -q '^dda.clock_ns,fifo.dda_had_depth,had.acc
   && ok || bad "csv header: $(head -1 "$TMP/a/results.csv")"
 grep -q "## Pareto front" "$TMP/a/sweep.md" && ok || bad "sweep.md"
 [[ $(head -c 4 "$TMP/a/rate_vs_cost.png" | tail -c 3) == PNG ]] && ok || bad "no plot"
+# sweep.html in headless Chromium: no errors, the chart holds every valid point and the front.
+tools/page_shot.sh dom "$TMP/a/sweep.html" > "$TMP/sweep_dom.html"
+grep -q 'data-errors="0"' "$TMP/sweep_dom.html" && grep -q 'data-ready="1"' "$TMP/sweep_dom.html" && ok \
+  || bad "sweep.html: $(grep -o '<body[^>]*>' "$TMP/sweep_dom.html")"
+want="data-points=\"$(jq '[.points[] | select(.valid)] | length' "$J")\" data-front=\"$(jq '[.points[] | select(.on_front)] | length' "$J")\""
+grep -q "$want" "$TMP/sweep_dom.html" && ok || bad "sweep.html chart: $(grep -o '<div id="front_chart"[^>]*>' "$TMP/sweep_dom.html"), want $want"
 
 # Killed after a few rows, then rerun: the same rows as the clean run.
 setsid "$GIRTD" sweep $S --jobs 2 --out "$TMP/b" > "$TMP/b.txt" 2>&1 &
