@@ -1,7 +1,7 @@
 #include "timing/backend_timing.hpp"
 
 #include <algorithm>
-
+#include <stdexcept>
 
 namespace girtd {
 
@@ -128,6 +128,7 @@ void BackendTimingModel::end_triangle(uint64_t dda_cycles) {
   t_.dda_clocks += dda_cycles;
   dda_at_ = at;
   t_.ticks = std::max(t_.ticks, at);
+  if (stepped_) take_stepped_counts();  // read between drains (report.html's timelines)
 }
 
 void BackendTimingModel::triangle(uint64_t dda_cycles, const std::vector<TimedPixel>& pixels) {
@@ -186,7 +187,11 @@ void BackendTimingModel::end_frame() {
 // seen on which the memory side is idle too.
 void BackendTimingModel::drain_stepped() {
   uint64_t at = next_en(std::max({t_.ticks, dda_at_, stepped_->now()}));
-  for (stepped_->run_until(at); !stepped_->idle(); stepped_->run_until(at)) at += period_;
+  const uint64_t from = at;
+  for (stepped_->run_until(at); !stepped_->idle(); stepped_->run_until(at)) {
+    at += period_;
+    if (at - from > (uint64_t{1} << 28)) throw std::logic_error("the stepped memory side did not go idle (a deadlock)");
+  }
   t_.ticks = at;
   dda_at_ = at;
   take_stepped_counts();
@@ -202,7 +207,7 @@ void BackendTimingModel::end_frame_stepped() {
   drain_stepped();
   stepped_->run_until(t_.ticks + 1);
   t_.ticks += 1;
-  dda_at_ = had_free_ = t_.ticks;
+  dda_at_ = t_.ticks;
   take_stepped_counts();
 }
 

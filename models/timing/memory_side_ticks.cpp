@@ -21,7 +21,8 @@ MemorySideTicks::MemorySideTicks(const Params& p)
       page_(size_t(layout_.cache.pages), 0) {}
 
 void MemorySideTicks::push(uint32_t page, HadOutcome outcome, uint64_t tick) {
-  if (tick < now_) throw std::logic_error("MemorySideTicks: a pixel pushed in the past");
+  // fifo_count() and the quiet skip rely on it: the DDA pushes on the tick the memory side has reached.
+  if (tick != now_) throw std::logic_error("MemorySideTicks: a pixel pushed on another tick than now()");
   fifo_.push_back({tick, page, outcome});
 }
 

@@ -27,8 +27,8 @@ class MemorySideTicks {
   uint64_t now() const { return now_; }
   // Steps until now() == tick (no-op when already there or past).
   void run_until(uint64_t tick);
-  // The DDA pushes a pixel of `page` on tick `tick` (>= now()): it is in
-  // the FIFO from the next tick on.
+  // The DDA pushes a pixel of `page` on tick `tick` (== now(): run_until it
+  // first): it is in the FIFO from the next tick on.
   void push(uint32_t page, HadOutcome outcome, uint64_t tick);
   // Pixels pushed before now() and not yet popped: the FIFO's count at now().
   uint64_t fifo_count() const { return fifo_.size() - (!fifo_.empty() && fifo_.back().tick >= now_ ? 1 : 0); }

@@ -3,7 +3,7 @@
 // triangle wasted (states that emitted no pixel) over the pixels it drew.
 // Fed with the pixels in the order the DDA emits them: page misses follow
 // from that order and the cache's geometry alone (direct-mapped, page P in
-// slot P mod pages; emptied at each frame's end), not from timing, so the
+// slot P mod pages; empty at each frame's start, as the RTL's flush leaves it), not from timing, so the
 // map is the same for golden's order, approx's and rtl's (one DDA,
 // regressed bit for bit).
 #pragma once

@@ -55,43 +55,42 @@ std::vector<ClaimRow> campaign_claims(const std::string& results_path) {
   const std::string pf_claim = "prefetch + write-behind: ~100 % cache hits (5.2.2), the study's inputs";
   const std::string rate_claim = "~40 Mpixel/s with write-behind and prefetch (5.2.2), the study's inputs";
   const std::string wb_thesis = "HAD's VRAM wait with write-behind / without = 0.5";
-  const std::string pf_thesis = "HAD time per pixel ~ the 25 ns access (no page waits)";
+  const std::string pf_thesis = "every access a hit: no time waiting for pages";
   const std::string rate_thesis = "~40 Mpixel/s";
+  auto not_measured = [&](const std::string& why) {
+    const std::string none = "not yet measured (" + results_path + ": " + why + ")";
+    return std::vector<ClaimRow>{{wb_claim, wb_thesis, none, "not yet measured"},
+                                 {pf_claim, pf_thesis, none, "not yet measured"},
+                                 {rate_claim, rate_thesis, none, "not yet measured"}};
+  };
   std::ifstream in(results_path);
-  if (!in) {
-    const std::string none = "not yet measured (" + results_path + ": run the study's sweeps)";
-    return {{wb_claim, wb_thesis, none, "not yet measured"}, {pf_claim, pf_thesis, none, "not yet measured"},
-            {rate_claim, rate_thesis, none, "not yet measured"}};
-  }
+  if (!in) return not_measured("run the study's sweeps");
   const json doc = json::parse(in);
   const auto plain = rows_with(doc, false, false), wb = rows_with(doc, true, false), pf = rows_with(doc, true, true);
-  std::vector<double> wait_ratio, ns_per_pixel, wait_share, rates;
+  std::vector<double> wait_ratio, wait_ns, wait_share, rates;
   for (const auto& [input, r] : plain) {
-    if (!wb.count(input) || !pf.count(input)) continue;
+    if (!wb.count(input) || !pf.count(input) || !(r.at("had_page_wait_s").get<double>() > 0)) continue;
     wait_ratio.push_back(wb.at(input).at("had_page_wait_s").get<double>() / r.at("had_page_wait_s").get<double>());
     const json& p = pf.at(input);
-    ns_per_pixel.push_back(1e9 * p.at("had_busy_s").get<double>() / p.at("cache_accesses").get<double>());
+    wait_ns.push_back(1e9 * p.at("had_page_wait_s").get<double>() / p.at("cache_accesses").get<double>());
     wait_share.push_back(p.at("had_page_wait_s").get<double>() / p.at("had_busy_s").get<double>());
     rates.push_back(rate(p));
   }
-  if (wait_ratio.empty()) {
-    const std::string none = "not yet measured (" + results_path + " has no thesis-timing rows for all three)";
-    return {{wb_claim, wb_thesis, none, "not yet measured"}, {pf_claim, pf_thesis, none, "not yet measured"},
-            {rate_claim, rate_thesis, none, "not yet measured"}};
-  }
+  if (wait_ratio.empty()) return not_measured("no thesis-timing rows for all three memory sides");
   const size_t n = wait_ratio.size();
-  const Spread w = spread(wait_ratio), ns = spread(ns_per_pixel), share = spread(wait_share), r = spread(rates);
+  const Spread w = spread(wait_ratio), ns = spread(wait_ns), share = spread(wait_share), r = spread(rates);
   std::vector<ClaimRow> rows;
   rows.push_back({wb_claim, wb_thesis,
                   fmt("median %.2f (%.2f to %.2f) over ", w.median, w.min, w.max) + std::to_string(n) + " inputs",
                   std::fabs(w.median - 0.5) <= 0.05 * 0.5 ? "confirmed" : "refuted"});
+  // A page wait under one base tick (5 ns) per pixel counts as every access a hit.
   rows.push_back({pf_claim, pf_thesis,
-                  fmt("median %.1f ns per pixel (%.1f to %.1f); ", ns.median, ns.min, ns.max) +
-                      fmt("page waits %.0f %% of the HAD's time (%.0f %% to %.0f %%)", 100 * share.median,
-                          100 * share.min, 100 * share.max),
-                  std::fabs(ns.median - 25.0) <= 5.0 ? "confirmed" : "refuted"});
+                  fmt("waiting for pages: median %.1f ns per pixel (%.1f to %.1f); ", ns.median, ns.min, ns.max) +
+                      fmt("%.0f %% of the HAD's time (%.0f %% to %.0f %%)", 100 * share.median, 100 * share.min,
+                          100 * share.max),
+                  ns.median <= 5.0 ? "confirmed" : "refuted"});
   rows.push_back({rate_claim, rate_thesis,
-                  fmt("sustained: median %.1f Mpixel/s (%.1f to %.1f); the DDA clocks at 35 ns", r.median, r.min,
+                  fmt("median %.1f Mpixel/s (%.1f to %.1f), sustained over 8 frames; the DDA clocks at 35 ns", r.median, r.min,
                       r.max),
                   std::fabs(r.median - 40.0) <= 0.05 * 40.0 ? "confirmed" : "refuted"});
   return rows;

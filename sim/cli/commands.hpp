@@ -26,6 +26,7 @@ struct RenderArgs {
   bool quiet = false;
   bool no_prune = false;
   std::optional<double> sample_timing;
+  std::string compare;  // "reference": report.html gains the error against the reference back end
   int repeat = 1;  // a one-frame input drawn this many times (sustained rates)  // approx: sampled timing (the accuracy command's estimator)
 };
 

@@ -43,6 +43,10 @@ int main(int argc, char** argv) {
   render->add_option("--dump", ra.dump, "LEVEL=FILE: record the stream at a stage boundary");
   render->add_option("--config", ra.config, kConfigHelp)->allow_extra_args(false);
   render->add_flag("--z-png", ra.z_png, "also write z.png (16-bit depth)");
+  render->add_option("--compare", ra.compare,
+                     "reference: also render on the reference back end and put the error heat map and its histogram "
+                     "into report.html")
+      ->check(CLI::IsMember({"reference"}));
   render->add_flag("--quiet", ra.quiet, "print nothing on success");
   render->add_flag("--no-prune", ra.no_prune,
                    "compute everything, even what no output depends on (the same outputs; report.json's left_out "

@@ -49,6 +49,7 @@ std::string render_child(const std::string& input, const std::string& backend, c
   const int rc = run_process_timed(args, log, timeout_s);
   if (rc == 0) return "";
   if (rc == kTimedOut) return backend + ": no result within " + std::to_string(int(timeout_s)) + " s (a hang)";
+  if (rc == kStopped) return backend + ": stopped by a signal";
   if (rc < 0) return backend + ": crashed: " + first_line(log);
   return backend + ": exit " + std::to_string(rc) + ": " + first_line(log);
 }

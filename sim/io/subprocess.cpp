@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -43,6 +44,7 @@ int run_process_timed(const std::vector<std::string>& args, const std::string& l
   const auto start = std::chrono::steady_clock::now();
   for (;;) {
     const pid_t done = waitpid(pid, &status, timeout_s > 0 ? WNOHANG : 0);
+    if (done < 0 && errno == EINTR) continue;  // a signal to us (a sweep being stopped): the child is still there
     if (done < 0) return -1;
     if (done == pid) break;
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout_s) {

@@ -10,20 +10,28 @@
 
 namespace girtd {
 
-// `t_s`: the modeled time of the push or pop (the report's occupancy timeline).
+// `t_s`: the modeled time of the push or pop (the report's occupancy
+// timeline: the level held since the last one is noted in every bin it
+// spans, so a bin without a push or pop still shows it).
 struct FifoActivity {
   uint64_t pushed = 0, popped = 0;
   uint64_t max_occupancy = 0;
   FifoSeries occupancy{true};
   void push(double t_s) {
+    occupancy.note_max(0, last_s_, t_s, double(pushed - popped));
     ++pushed;
     if (pushed - popped > max_occupancy) max_occupancy = pushed - popped;
-    occupancy.note_max(0, t_s, double(pushed - popped));
+    occupancy.note_max(0, t_s, t_s, double(pushed - popped));
+    last_s_ = t_s;
   }
   void pop(double t_s) {
+    occupancy.note_max(0, last_s_, t_s, double(pushed - popped));
     ++popped;
-    occupancy.note_max(0, t_s, double(pushed - popped));
+    last_s_ = t_s;
   }
+
+ private:
+  double last_s_ = 0;
 };
 
 enum class StageState : uint8_t { kStarved, kBusy, kBlocked };

@@ -1,8 +1,9 @@
 // Modeled time cut into equal bins, for the report page's timelines: a
 // stage's busy, starved and blocked seconds in each bin, or a FIFO's largest
 // occupancy. Adaptive: bins start at 1 us and, when a run outgrows
-// kMaxBins, neighbours merge and the bin doubles, so any run keeps between
-// kMaxBins / 2 and kMaxBins bins (a 1 s run: bins of 1.05 ms). Plain C++
+// kMaxBins, neighbours merge and the bin doubles, so a run longer than
+// kMaxBins us keeps between kMaxBins / 2 and kMaxBins bins (a 1 s run: bins
+// of 1.05 ms). Plain C++
 // (the report reads it). Its cost is measured by `girtd bench`.
 #pragma once
 
@@ -37,11 +38,11 @@ class TimeSeries {
       t0 = end;
     }
   }
-  // The largest `value` of channel `c` seen in the bin of time `t`.
-  void note_max(size_t c, double t, double value) {
-    grow_to(t);
-    double& v = bins_[index(t)][c];
-    v = std::max(v, value);
+  // `value` held by channel `c` over [t0, t1]: every bin it touches keeps
+  // the largest value seen in it.
+  void note_max(size_t c, double t0, double t1, double value) {
+    grow_to(t1);
+    for (size_t i = index(t0), last = index(t1); i <= last; ++i) bins_[i][c] = std::max(bins_[i][c], value);
   }
 
  private:

@@ -81,7 +81,11 @@ std::string page_head(const std::string& title, const std::optional<ChartLibrary
 }
 
 std::string page_tail(const std::string& data_json, const char* script) {
-  return "<script id=\"girtd-data\" type=\"application/json\">" + script_safe(data_json) + "</script>\n<script>" +
+  // JSON has '<' only inside strings, where \u003c reads the same: nothing
+  // in the data can then open or close an element.
+  std::string safe;
+  for (char c : data_json) safe += c == '<' ? std::string("\\u003c") : std::string(1, c);
+  return "<script id=\"girtd-data\" type=\"application/json\">" + safe + "</script>\n<script>" +
          kPrologue + script + kEpilogue + "</script>\n</body></html>\n";
 }
 

@@ -23,7 +23,7 @@ std::string base64(const std::string& bytes);
 
 // <!DOCTYPE html> ... <body>: the title, the style, the chart library.
 std::string page_head(const std::string& title, const std::optional<ChartLibrary>& charts);
-// `data` as a JSON script element, then `script` run with the error-recording
+// `data` (JSON text) as a script element, then `script` run with the error-recording
 // prologue and epilogue (body data-errors, data-error-text, data-ready), and
 // </body></html>.
 std::string page_tail(const std::string& data_json, const char* script);

@@ -1,9 +1,11 @@
 #include "report/report_page.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
+#include "io/image_compare.hpp"
 #include "io/png_io.hpp"
 #include "report/page_parts.hpp"
 
@@ -72,6 +74,17 @@ function build() {
         ' misses (the most of any page); ' + total + ' in all, ' + pm.page_width_px + ' x ' + pm.page_height_px + ' pixel pages.';
   }
   const charts = document.getElementById('timelines');
+  if (typeof uPlot !== 'undefined' && data.compare) {  // the error histogram, log counts
+    const h = data.compare.histogram, box = document.getElementById('error_histogram');
+    box.dataset.pixels = h.reduce((a, b) => a + b, 0);
+    box.dataset.differing = h.slice(1).reduce((a, b) => a + b, 0);
+    const last = Math.max(1, h.reduce((m, c, i) => c ? i : m, 0));
+    new uPlot({width: 500, height: 220, title: 'pixels by largest channel difference',
+               scales: {x: {time: false}, y: {distr: 3}}, axes: [{label: 'difference (LSB)'}, {label: 'pixels'}],
+               series: [{}, {label: 'pixels', stroke: '#b2182b', fill: 'rgba(178,24,43,0.3)',
+                             paths: uPlot.paths.bars({size: [0.9]})}]},
+              [h.slice(0, last + 1).map((_, i) => i), h.slice(0, last + 1).map(c => c || null)], box);
+  }
   if (typeof uPlot === 'undefined') { charts.appendChild(el('p', 'The chart library is not in this page (tools/girtd installs it).')); return; }
   const sync = uPlot.sync('time');
   for (const st of data.timeline) {
@@ -149,6 +162,45 @@ std::string heat_maps_html(const RunStats& s) {
   return o.str();
 }
 
+// The comparison: a histogram of each pixel's largest channel difference
+// (0..255) and its heat map (dark: equal; blue -> red: 1 -> the largest).
+std::string compare_html(const RgbImage& frame, const FrameComparison& c, nlohmann::json& data) {
+  std::vector<uint64_t> histogram(256, 0);
+  RgbImage map;
+  map.width = frame.width;
+  map.height = frame.height;
+  map.rgb.assign(frame.rgb.size(), 0);
+  std::vector<uint8_t> diff(frame.rgb.size() / 3);
+  int most = 0;
+  for (size_t i = 0; i < diff.size(); ++i) {
+    int d = 0;
+    for (size_t k = 0; k < 3; ++k) d = std::max(d, std::abs(int(frame.rgb[3 * i + k]) - int(c.frame.rgb[3 * i + k])));
+    diff[i] = uint8_t(d);
+    ++histogram[size_t(d)];
+    most = std::max(most, d);
+  }
+  for (size_t i = 0; i < diff.size(); ++i) {
+    uint8_t* px = &map.rgb[3 * i];
+    if (!diff[i]) {
+      px[0] = px[1] = px[2] = 24;
+      continue;
+    }
+    const double f = most > 1 ? double(diff[i] - 1) / double(most - 1) : 1.0;
+    px[0] = uint8_t(60 + 195 * f);
+    px[1] = uint8_t(60 * (1 - f));
+    px[2] = uint8_t(255 * (1 - f));
+  }
+  const ImageError e = compare_images(frame, c.frame);
+  data["compare"] = {{"against", c.against}, {"histogram", histogram}, {"differing", e.differing},
+                     {"max_abs", e.max_abs}, {"mean_abs", e.mean_abs}};
+  std::ostringstream o;
+  o << "<div><h2>Against " << html_text(c.against) << ": the largest channel difference per pixel</h2>"
+    << "<img class=\"frame\" id=\"error_map\" alt=\"error heat map\" src=\"data:image/png;base64,"
+    << base64(png_rgb_bytes(map)) << "\"><p>Dark: equal; blue 1 to red " << most << " (the largest); "
+    << e.differing << " pixels differ.</p><div id=\"error_histogram\"></div></div>\n";
+  return o.str();
+}
+
 }  // namespace
 
 nlohmann::json report_page_data(const nlohmann::json& report, const RunStats& s) {
@@ -164,21 +216,23 @@ nlohmann::json report_page_data(const nlohmann::json& report, const RunStats& s)
   return data;
 }
 
-std::string report_html(const nlohmann::json& page_data, const std::string& frame_png, const RunStats& s,
-                        const std::optional<ChartLibrary>& charts) {
+std::string report_html(const nlohmann::json& page_data_in, const RgbImage& frame, const RunStats& s,
+                        const std::optional<FrameComparison>& compare, const std::optional<ChartLibrary>& charts) {
+  nlohmann::json page_data = page_data_in;
+  const std::string compared = compare ? compare_html(frame, *compare, page_data) : "";
   const nlohmann::json& r = page_data.at("report");
   std::ostringstream o;
   o << page_head("girtd render: " + r.value("input", std::string()) + " on " + r.value("backend", std::string()),
                  charts)
     << "<h1>girtd render</h1>\n<p id=\"verdict\"></p>\n"
     << "<div class=\"row\"><div><h2>Frame</h2><img class=\"frame\" alt=\"the frame\" src=\"data:image/png;base64,"
-    << base64(frame_png) << "\"></div>\n" << heat_maps_html(s) << "<div><h2>Run</h2><div id=\"run\"></div><div id=\"time\"></div>"
+    << base64(png_rgb_bytes(frame)) << "\"></div>\n" << heat_maps_html(s) << compared << "<div><h2>Run</h2><div id=\"run\"></div><div id=\"time\"></div>"
     << "<div id=\"pixels\"></div></div></div>\n"
     << "<h2>Timelines: each stage over modeled time, and the FIFO in front of it</h2>\n"
     << "<p>Drag to zoom (all charts follow), double-click to reset.</p><div id=\"timelines\"></div>\n"
     << "<h2>Warnings</h2><div id=\"warnings\"></div>\n<h2>Numerics</h2><div id=\"numerics\"></div>\n"
     << "<h2>Left out</h2><div id=\"left_out\"></div>\n<h2>Configuration</h2><pre id=\"config\"></pre>\n"
-    << page_tail(page_data.dump(), kPageScript);
+    << page_tail(page_data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), kPageScript);
   return o.str();
 }
 

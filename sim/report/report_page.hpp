@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "backends/run_stats.hpp"
+#include "io/png_io.hpp"
 #include "report/page_parts.hpp"
 
 namespace girtd {
@@ -24,8 +25,16 @@ namespace girtd {
 // the page misses per cache page (approx).
 nlohmann::json report_page_data(const nlohmann::json& report, const RunStats& s);
 
-// `s.maps`' DDA waste map is inlined as a picture (its pixels coloured here).
-std::string report_html(const nlohmann::json& page_data, const std::string& frame_png, const RunStats& s,
-                        const std::optional<ChartLibrary>& charts);
+// The frame against another back end's (render --compare reference): the
+// largest channel difference per pixel, as a histogram and a heat map.
+struct FrameComparison {
+  std::string against;  // the other back end
+  RgbImage frame;       // its frame
+};
+
+// `s.maps`' DDA waste map and the comparison's heat map are inlined as
+// pictures (their pixels coloured here).
+std::string report_html(const nlohmann::json& page_data, const RgbImage& frame, const RunStats& s,
+                        const std::optional<FrameComparison>& compare, const std::optional<ChartLibrary>& charts);
 
 }  // namespace girtd

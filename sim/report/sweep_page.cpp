@@ -47,7 +47,7 @@ std::string sweep_html(const std::string& spec, const std::string& headline, con
   return page_head("girtd sweep " + spec, charts) + "<h1>girtd sweep " + html_text(spec) + "</h1>\n<pre>" +
          html_text(headline) + "</pre>\n<div id=\"front_chart\"></div>\n<p>Hover a point to read it:</p>" +
          "<pre id=\"hover\"></pre>\n<h2>The Pareto front</h2><table id=\"front_table\"></table>\n" +
-         page_tail(data.dump(), kSweepScript);
+         page_tail(data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), kSweepScript);
 }
 
 }  // namespace girtd

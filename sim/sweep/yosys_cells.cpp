@@ -36,8 +36,11 @@ std::optional<long> dda_yosys_cells(const Params& p, const std::string& cache_di
   const std::string script = "read_verilog -sv -I" + work.string() + " " + sources +
                              "; chparam -set WRAP_DETECT 0 dda; synth -top dda -flatten; tee -o " + stat.string() +
                              " stat";
-  const fs::path log = fs::path(cache_dir) / "yosys_dda.log";
-  if (run_process_logged({"yosys", "-q", "-p", script}, log.string()) != 0) return std::nullopt;
+  const fs::path log = work.string() + ".log";  // kept when yosys fails
+  if (run_process_logged({"yosys", "-q", "-p", script}, log.string()) != 0) {
+    fs::remove_all(work);
+    return std::nullopt;
+  }
   std::ifstream in(stat);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::optional<long> cells;
@@ -46,6 +49,7 @@ std::optional<long> dda_yosys_cells(const Params& p, const std::string& cache_di
     cells = std::stol((*it)[1]);  // the last: the flattened top
   fs::remove_all(work);
   if (!cells) return std::nullopt;
+  fs::remove(log);
   const fs::path tmp = cache.string() + ".tmp" + std::to_string(getpid());
   std::ofstream(tmp) << *cells << "\n";
   fs::rename(tmp, cache);  // Slurm tasks may race: each writes whole

@@ -56,6 +56,19 @@ if len(timed) < 5: errors.append("only %d timed stages" % len(timed))
 print("\n".join(errors))
 sys.exit(1 if errors else 0)
 PY
+# --compare reference: the error histogram counts every pixel, and the
+# differing ones equal a comparison of the two PNGs made here (PIL).
+"$GIRTD" render traces/demo.trace --backend approx --compare reference --out "$TMP/c" --quiet 2>/dev/null \
+  && "$GIRTD" render traces/demo.trace --backend reference --out "$TMP/r" --quiet 2>/dev/null && ok || bad "renders failed"
+want=$(/usr/bin/python3 -c "
+import sys, numpy
+from PIL import Image
+a, b = (numpy.asarray(Image.open(f).convert('RGB'), dtype=int) for f in sys.argv[1:3])
+print('data-pixels=\"%d\" data-differing=\"%d\"' % (a.shape[0] * a.shape[1], int((abs(a - b).max(axis=2) > 0).sum())))
+" "$TMP/c/frame.png" "$TMP/r/frame.png")
+tools/page_shot.sh dom "$TMP/c/report.html" > "$TMP/cdom.html"
+grep -q 'data-errors="0"' "$TMP/cdom.html" && grep -q "$want" "$TMP/cdom.html" && ok \
+  || bad "--compare: $(grep -oE '<body[^>]*>|<div id="error_histogram"[^>]*>' "$TMP/cdom.html"), want $want"
 tools/page_shot.sh png "$P" "$OUT/report_page.png" && [[ $(head -c 4 "$OUT/report_page.png" | tail -c 3) == PNG ]] \
   && ok || bad "no screenshot"
 finish
