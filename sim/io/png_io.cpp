@@ -35,25 +35,25 @@ struct PngReader {
   }
 };
 
-}  // namespace
-
-void write_png_rgb(const std::string& path, const RgbImage& img) {
+png_image rgb_image(const RgbImage& img) {
   png_image image;
   std::memset(&image, 0, sizeof image);
   image.version = PNG_IMAGE_VERSION;
   image.width = img.width;
   image.height = img.height;
   image.format = PNG_FORMAT_RGB;
+  return image;
+}
+
+}  // namespace
+
+void write_png_rgb(const std::string& path, const RgbImage& img) {
+  png_image image = rgb_image(img);
   write_image(path, image, img.rgb.data(), 0);
 }
 
 std::string png_rgb_bytes(const RgbImage& img) {
-  png_image image;
-  std::memset(&image, 0, sizeof image);
-  image.version = PNG_IMAGE_VERSION;
-  image.width = img.width;
-  image.height = img.height;
-  image.format = PNG_FORMAT_RGB;
+  png_image image = rgb_image(img);
   png_alloc_size_t size = 0;  // first the size, then the bytes
   if (!png_image_write_to_memory(&image, nullptr, &size, 0, img.rgb.data(), 0, nullptr))
     throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
