@@ -13,9 +13,10 @@ campaign: a coarse grid, then refinements), recorded with
 - answer: the cheapest point run that sustains the target on every input,
   beside the thesis' configuration, and the Pareto front of the slowest
   input's rate against cost over every point run;
-- path: from the thesis' design, the single change (one axis of a spec) that
-  buys the most rate on the slowest input per unit of cost, step by step,
-  until the target is met (a greedy walk over the points run).
+- path: from the thesis' design, the single change that buys the most rate
+  on the slowest input per unit of cost, step by step, until the target is
+  met (a greedy walk over study_path: each axis at the thesis' value or the
+  preset's, every combination run).
 """
 import json
 import pathlib
@@ -42,6 +43,16 @@ def load(name):
     return json.loads(path.read_text()) if path.exists() else None
 
 
+def rate(row):
+    """The rate a row is judged by: sustained when the input ran as several frames."""
+    r = row.get("sustained_mpixels_per_s")
+    return r if r is not None else row.get("modeled_mpixels_per_s")
+
+
+def inputs_of(doc):
+    return {r["input"] for r in doc["rows"]}
+
+
 def settings_of(doc):
     """Each point's full settings: the design's defaults, the spec's base
     files, the point's axis values."""
@@ -61,13 +72,18 @@ def settings_of(doc):
 
 
 def campaign():
-    """Every valid point run (merged by name), its settings, and the groups of
-    keys one axis changes together."""
+    """Every valid point run on every one of the study's inputs (the thesis
+    sweep's; sweeps over fewer inputs were the search, not the verdict),
+    merged by name, its settings, and the groups of keys one axis changes
+    together."""
     points, settings, groups, docs = {}, {}, [], []
+    th = load("study_thesis")
     for d in sorted(MEASURED.glob("study_*")):
         if d.name == "study_thesis" or not (d / "results.json").exists():
             continue
         doc = load(d.name)
+        if th is None or inputs_of(doc) != inputs_of(th):
+            continue
         docs.append(doc)
         settings.update(settings_of(doc))
         for a in doc["axes"]:
@@ -96,15 +112,15 @@ def thesis():
     print()
     print("| input | sustained Mpixel/s | stopped by | HAD busy | of it, waiting for pages |")
     print("|---|---|---|---|---|")
-    rows = sorted(doc["rows"], key=lambda r: r["sustained_mpixels_per_s"] or r["modeled_mpixels_per_s"])
+    rows = sorted((r for r in doc["rows"] if r["valid"]), key=rate)
     for r in rows:
-        rate = r["sustained_mpixels_per_s"] or r["modeled_mpixels_per_s"]
         print("| `%s` | %.2f | %s | %.0f %% of the run | %.0f %% |" % (
-            pathlib.Path(r["input"]).name, rate, r["bottleneck"], 100 * r["had_busy_s"] / r["modeled_time_s"],
+            pathlib.Path(r["input"]).name, rate(r), r["bottleneck"], 100 * r["had_busy_s"] / r["modeled_time_s"],
             100 * r["had_page_wait_s"] / r["had_busy_s"]))
     print()
-    print("Slowest: `%s` at %.2f Mpixel/s; none of the %d inputs reaches %.0f." % (
-        pathlib.Path(rows[0]["input"]).name, rows[0]["sustained_mpixels_per_s"], len(rows), TARGET))
+    reaching = sum(rate(r) >= TARGET for r in rows)
+    print("Slowest: `%s` at %.2f Mpixel/s; %d of the %d inputs reach %.0f." % (
+        pathlib.Path(rows[0]["input"]).name, rate(rows[0]), reaching, len(rows), TARGET))
 
 
 def front(points):
@@ -131,7 +147,7 @@ def answer():
                                total_wall / max(rows, 1)))
     print()
     meeting = sorted((p for p in points.values() if p["meets_target"]), key=lambda p: (p["cost"], -p["min_mpixels_per_s"]))
-    thesis_rate = min(r["sustained_mpixels_per_s"] for r in th["rows"])
+    thesis_rate = min(rate(r) for r in th["rows"] if r["valid"])
     thesis_cost = th["points"][0]["cost"]
     if not meeting:
         print("No point run sustains %.0f Mpixel/s on every input." % TARGET)
@@ -157,57 +173,70 @@ def answer():
         print("| %.0f | %.2f | `%s` | %s |" % (p["cost"], p["min_mpixels_per_s"], p["point"], fmt_settings(s, changed)))
 
 
+def canon(v):
+    """A value as a key: numbers as floats (35 and 35.0 alike), objects by sorted keys."""
+    if isinstance(v, dict):
+        return tuple(sorted((k, canon(x)) for k, x in v.items()))
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        return v
+    return float(v)
+
+
 def path():
-    points, settings, groups, _ = campaign()
-    th = load("study_thesis")
-    if not points or not th:
-        print("Not yet recorded (`testbench/measured/sweeps/study_*`).")
+    """The greedy walk over the path sweep (study_path: every combination of
+    the thesis' value and the preset's on each axis, on the hardest inputs):
+    from the thesis' design, at each step the one change that buys the most
+    rate on the slowest input per unit of cost (free gains first)."""
+    doc = load("study_path")
+    if not doc:
+        print("Not yet recorded (`testbench/measured/sweeps/study_path`).")
         return
-    defaults = flatten(json.loads((ROOT / "config/girtd.json").read_text()))
-    # The campaign's start: the thesis' values on every axis (only the base differs).
-    def axis_keys():
-        return set().union(*groups)
-    start = [p for p in points.values()
-             if all(settings[p["point"]][k] == defaults.get(k) for k in axis_keys())]
+    axes = doc["axes"]
+    points = [p for p in doc["points"] if p["valid"]]
+    spec = json.loads((ROOT / doc["spec"]).read_text())
+    thesis_values = {a: canon(spec["axes"][a][0]) for a in axes}
+    key = lambda p: tuple(canon(p[a]) for a in axes)
+    by_key = {key(p): p for p in points}
+    cur = by_key.get(tuple(thesis_values[a] for a in axes))
+    inputs = sorted({pathlib.Path(r["input"]).name for r in doc["rows"]})
+    print("Measured by `girtd sweep %s` (`testbench/measured/sweeps/study_path/results.json`): %d points (each "
+          "axis at the thesis' value or the preset's) on the %d inputs that bind (%s), %d frames each." % (
+              doc["spec"], len(points), len(inputs), ", ".join("`%s`" % i for i in inputs), doc["repeat"]))
+    print()
     print("| step | change | cost | Mpixel/s, slowest input | Mpixel/s per 100 chips |")
     print("|---|---|---|---|---|")
-    thesis_rate = min(r["sustained_mpixels_per_s"] for r in th["rows"])
-    print("| 0 | the thesis' design | %.0f | %.2f | |" % (th["points"][0]["cost"], thesis_rate))
-    if not start:
-        print("| | (the campaign has no point with the thesis' values on every axis) | | | |")
+    if cur is None:
+        print("| | (the thesis' point is missing) | | | |")
         return
-    cur = start[0]
-    s0 = settings[cur["point"]]
-    base_changes = sorted(k for k in s0 if s0[k] != defaults.get(k))
-    print("| 1 | the campaign's base: %s | %.0f | %.2f | |" % (fmt_settings(s0, base_changes), cur["cost"],
-                                                             cur["min_mpixels_per_s"]))
-    step = 1
-    while not cur["meets_target"]:
-        sc = settings[cur["point"]]
+    print("| 0 | the thesis' design | %.0f | %.2f | |" % (cur["cost"], cur["min_mpixels_per_s"]))
+    step, changed = 0, set()
+    while len(changed) < len(axes):
         best, best_score = None, None
-        for p in points.values():
-            sp = settings[p["point"]]
-            diff = {k for k in sp if sp[k] != sc.get(k)}
-            if not diff or not any(diff <= g for g in groups):
+        for a in axes:
+            if a in changed:
+                continue
+            k = list(key(cur))
+            values = [canon(v) for v in spec["axes"][a]]
+            k[axes.index(a)] = values[1] if k[axes.index(a)] == values[0] else values[0]
+            p = by_key.get(tuple(k))
+            if p is None:
                 continue
             gain = p["min_mpixels_per_s"] - cur["min_mpixels_per_s"]
-            if gain <= 0:
-                continue
             extra = p["cost"] - cur["cost"]
-            score = (1, gain) if extra <= 0 else (0, gain / extra)  # free gains first
+            score = (1, gain) if extra <= 0 else (0, gain / extra)  # free changes first
             if best_score is None or score > best_score:
-                best, best_score = p, score
-        if not best:
-            print("| | no single change among the points run raises the slowest input's rate further | | | |")
-            return
+                best, best_score, best_axis = p, score, a
+        if best is None:
+            break
         step += 1
-        sb = settings[best["point"]]
-        diff = sorted(k for k in sb if sb[k] != sc.get(k))
         per = "free" if best["cost"] <= cur["cost"] else "%.2f" % (
             100 * (best["min_mpixels_per_s"] - cur["min_mpixels_per_s"]) / (best["cost"] - cur["cost"]))
-        print("| %d | %s | %.0f | %.2f | %s |" % (step, fmt_settings(sb, diff), best["cost"], best["min_mpixels_per_s"],
-                                                  per))
+        print("| %d | `%s` = %s | %.0f | %.2f | %s |" % (step, best_axis, json.dumps(best[best_axis]), best["cost"],
+                                                       best["min_mpixels_per_s"], per))
+        changed.add(best_axis)
         cur = best
+        if cur["meets_target"]:
+            break
 
 
 if __name__ == "__main__":

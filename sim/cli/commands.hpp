@@ -31,7 +31,8 @@ struct RenderArgs {
 };
 
 int run_render(const RenderArgs& a);
-int run_claims(const ConfigFiles& config);
+// campaign_only: the rows read from the study campaign's stored results.
+int run_claims(const ConfigFiles& config, bool campaign_only = false);
 // bless: rewrite the stored expectations from this run (cli/expectations.hpp).
 // option_matrix: the pipeline table under each memory-side option.
 // inputs: the pipeline table's (default: the sample workloads).

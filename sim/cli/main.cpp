@@ -63,6 +63,9 @@ int main(int argc, char** argv) {
   ConfigFiles claims_config;
   CLI::App* claims = app.add_subcommand("claims", "the thesis' claims (GIRTD.md §9) against measurements");
   claims->add_option("--config", claims_config, kConfigHelp)->allow_extra_args(false);
+  bool claims_campaign = false;
+  claims->add_flag("--campaign", claims_campaign,
+                   "only chapter 5's rows read from the study campaign's stored results (fast; the README's table)");
 
   ConfigFiles bench_config;
   std::string bench_out = "out/bench";
@@ -162,7 +165,7 @@ int main(int argc, char** argv) {
                                            : claims_config;
     if (drives_rtl) run_in_rtl_variant_if_needed(load_params(config), argv);
     if (*render) return run_render(ra);
-    if (*claims) return run_claims(claims_config);
+    if (*claims) return run_claims(claims_config, claims_campaign);
     if (*bench) return run_bench(bench_config, bench_out, bench_pipeline, bench_leave_out, bench_bless, bench_options, bench_inputs);
     if (*regress) return run_regress(rg);
     if (*stress) return run_stress(st);
