@@ -74,9 +74,8 @@ def settings_of(doc):
 def campaign():
     """Every valid point run on every one of the study's inputs (the thesis
     sweep's; sweeps over fewer inputs were the search, not the verdict),
-    merged by name, its settings, and the groups of keys one axis changes
-    together."""
-    points, settings, groups, docs = {}, {}, [], []
+    merged by name, and its settings."""
+    points, settings, docs = {}, {}, []
     th = load("study_thesis")
     for d in sorted(MEASURED.glob("study_*")):
         if d.name == "study_thesis" or not (d / "results.json").exists():
@@ -86,15 +85,10 @@ def campaign():
             continue
         docs.append(doc)
         settings.update(settings_of(doc))
-        for a in doc["axes"]:
-            keys = set()
-            for p in doc["points"]:
-                keys |= set(flatten(p[a]).keys()) if isinstance(p[a], dict) else {a}
-            groups.append(keys)
         for p in doc["points"]:
             if p["valid"]:
                 points[p["point"]] = p
-    return points, settings, groups, docs
+    return points, settings, docs
 
 
 def fmt_settings(s, keys):
@@ -134,7 +128,7 @@ def front(points):
 
 
 def answer():
-    points, settings, _, docs = campaign()
+    points, settings, docs = campaign()
     th = load("study_thesis")
     if not points or not th:
         print("Not yet recorded (`testbench/measured/sweeps/study_*`).")
@@ -223,14 +217,20 @@ def path():
                 continue
             gain = p["min_mpixels_per_s"] - cur["min_mpixels_per_s"]
             extra = p["cost"] - cur["cost"]
-            score = (1, gain) if extra <= 0 else (0, gain / extra)  # free changes first
+            # A gain for nothing first, then the most rate per chip; a change
+            # that buys nothing alone only when none buys anything (cheapest).
+            if gain > 0:
+                score = (2, gain) if extra <= 0 else (1, gain / extra)
+            else:
+                score = (0, -extra)
             if best_score is None or score > best_score:
                 best, best_score, best_axis = p, score, a
         if best is None:
             break
         step += 1
-        per = "free" if best["cost"] <= cur["cost"] else "%.2f" % (
-            100 * (best["min_mpixels_per_s"] - cur["min_mpixels_per_s"]) / (best["cost"] - cur["cost"]))
+        gain = best["min_mpixels_per_s"] - cur["min_mpixels_per_s"]
+        per = ("none alone" if gain <= 0 else "free" if best["cost"] <= cur["cost"] else
+               "%.2f" % (100 * gain / (best["cost"] - cur["cost"])))
         print("| %d | `%s` = %s | %.0f | %.2f | %s |" % (step, best_axis, json.dumps(best[best_axis]), best["cost"],
                                                        best["min_mpixels_per_s"], per))
         changed.add(best_axis)

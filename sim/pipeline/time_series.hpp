@@ -3,7 +3,7 @@
 // occupancy. Adaptive: bins start at 1 us and, when a run outgrows
 // kMaxBins, neighbours merge and the bin doubles, so a run longer than
 // kMaxBins us keeps between kMaxBins / 2 and kMaxBins bins (a 1 s run: bins
-// of 1.05 ms). Plain C++
+// of 1.024 ms). Plain C++
 // (the report reads it). Its cost is measured by `girtd bench`.
 #pragma once
 

@@ -196,7 +196,8 @@ std::string compare_html(const RgbImage& frame, const FrameComparison& c, nlohma
   std::ostringstream o;
   o << "<div><h2>Against " << html_text(c.against) << ": the largest channel difference per pixel</h2>"
     << "<img class=\"frame\" id=\"error_map\" alt=\"error heat map\" src=\"data:image/png;base64,"
-    << base64(png_rgb_bytes(map)) << "\"><p>Dark: equal; blue 1 to red " << most << " (the largest); "
+    << base64(png_rgb_bytes(map)) << "\"><p>"
+    << (most ? "Dark: equal; blue 1 to red " + std::to_string(most) + " (the largest); " : std::string("Equal: "))
     << e.differing << " pixels differ.</p><div id=\"error_histogram\"></div></div>\n";
   return o.str();
 }
