@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "report/accuracy_page.hpp"
 #include "accuracy/accuracy_levels.hpp"
 #include "accuracy/accuracy_table.hpp"
 #include "accuracy/config_variants.hpp"
@@ -262,12 +263,15 @@ int run_accuracy(const AccuracyArgs& a) {
   const std::string md = accuracy_markdown(rows, level_table, counter_table, agreement) + "\n" +
                          variants_markdown(variant_table);
   files.add_text("accuracy.md", "# girtd accuracy\n\n" + md);
+  const std::optional<ChartLibrary> charts = load_chart_library();
+  if (!charts) std::fprintf(stderr, "warning: accuracy.html: %s\n", kNoChartLibrary);
+  files.add_text("accuracy.html", accuracy_html(command, rows, level_table, charts));
   files.commit();
   std::fputs(md.c_str(), stdout);
   // The plots (tools/accuracy_plots.py): Debian's python, whose matplotlib
   // tools/girtd installs (a python3 earlier on PATH may not have it).
   const int plot = run_process({"/usr/bin/python3", std::string(GIRTD_SOURCE_DIR) + "/tools/accuracy_plots.py", a.out_dir}, false);
-  std::printf("wrote %s, accuracy.csv, accuracy.md%s\n", files.path("accuracy.json").c_str(),
+  std::printf("wrote %s, accuracy.csv, accuracy.md, accuracy.html%s\n", files.path("accuracy.json").c_str(),
               plot == 0 ? " and the plots" : "");
   if (plot != 0) {
     std::fprintf(stderr, "girtd accuracy: the plots failed (python3-matplotlib; tools/girtd installs it)\n");

@@ -40,6 +40,12 @@ head -1 "$A/accuracy.csv" | grep -q '^input,level,variant,wall_s,sim_pixels_per_
 grep -q "## Timing estimate" "$A/accuracy.md" && ok || bad "accuracy.md"
 is_png() { [[ -f $1 && $(head -c 4 "$1" | tail -c 3) == PNG ]]; }
 is_png "$A/time_error_vs_wall.png" && ok || bad "no time plot"
+# accuracy.html in headless Chromium: no errors, the chart holds every row with a time error, a series per level.
+tools/page_shot.sh dom "$A/accuracy.html" > "$TMP/acc_dom.html"
+want="data-rows=\"$(jq '[.rows[] | select(.time_error != null and .wall_s > 0)] | length' "$J")\" data-levels=\"$(jq \
+  '[.rows[] | select(.time_error != null and .wall_s > 0) | .level] | unique | length' "$J")\""
+grep -q 'data-errors="0"' "$TMP/acc_dom.html" && grep -q "$want" "$TMP/acc_dom.html" && ok \
+  || bad "accuracy.html: $(grep -oE '<body[^>]*>|<div id="error_chart"[^>]*>' "$TMP/acc_dom.html"), want $want"
 
 P=$TMP/precision
 "$GIRTD" accuracy traces/opaque_200px.trace --backends golden --vary ep.d.frac_bits=6,12,16 --out "$P" \
