@@ -19,7 +19,7 @@ class OutputSet {
   ~OutputSet();
   // `write(tmp_path)` writes the file's content to the temporary path.
   void add(const std::string& name, const std::function<void(const std::string&)>& write);
-  void add_text(const std::string& name, const std::string& text);
+  void add_text(const std::string& name, const std::string& text);  // or any bytes
   // Creates the directory and renames every file into place.
   void commit();
   std::string path(const std::string& name) const { return dir_ + "/" + name; }

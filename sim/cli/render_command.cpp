@@ -185,7 +185,8 @@ int run_render(const RenderArgs& a) {
   const nlohmann::json report = make_report(ctx, out.stats, params);
 
   OutputSet files(dir);
-  files.add("frame.png", [&](const std::string& p) { write_png_rgb(p, out.shown); });
+  const std::string frame_png = png_rgb_bytes(out.shown);  // frame.png and the page's picture: encoded once
+  files.add_text("frame.png", frame_png);
   for (size_t i = 0; i < out.per_frame.size(); ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%03zu.png", i);
@@ -204,7 +205,7 @@ int run_render(const RenderArgs& a) {
     compare = FrameComparison{"reference", render_trace(ref_input.trace, *ref, params, ref_opt).shown};
   }
   files.add("report.html", [&](const std::string& p) {
-    std::ofstream(p) << report_html(report_page_data(report, out.stats), out.shown, out.stats, compare, charts);
+    std::ofstream(p) << report_html(report_page_data(report, out.stats), out.shown, frame_png, out.stats, compare, charts);
   });
   files.commit();
 

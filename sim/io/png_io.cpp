@@ -52,8 +52,9 @@ void write_png_rgb(const std::string& path, const RgbImage& img) {
   write_image(path, image, img.rgb.data(), 0);
 }
 
-std::string png_rgb_bytes(const RgbImage& img) {
+std::string png_rgb_bytes(const RgbImage& img, bool fast) {
   png_image image = rgb_image(img);
+  if (fast) image.flags |= PNG_IMAGE_FLAG_FAST;
   png_alloc_size_t size = 0;  // first the size, then the bytes
   if (!png_image_write_to_memory(&image, nullptr, &size, 0, img.rgb.data(), 0, nullptr))
     throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);

@@ -14,8 +14,9 @@ struct RgbImage {
 
 // Throws InputError(path, 0, ...) when the file cannot be written or read.
 void write_png_rgb(const std::string& path, const RgbImage& img);
-// The same PNG as bytes (for pages that inline their pictures).
-std::string png_rgb_bytes(const RgbImage& img);
+// The same PNG as bytes (for pages that inline their pictures); `fast`:
+// libpng's fast compression (larger, several times quicker: heat maps).
+std::string png_rgb_bytes(const RgbImage& img, bool fast = false);
 void write_png_gray16(const std::string& path, int width, int height, const std::vector<uint16_t>& values);
 RgbImage read_png_rgb(const std::string& path);
 // A file write_png_gray16 wrote (z.png), value for value.

@@ -145,7 +145,7 @@ std::string waste_map_png(const ScreenMaps& m) {
     px[1] = uint8_t(255 * (lo - hi));
     px[2] = uint8_t(255 * (1 - lo));
   }
-  return png_rgb_bytes(img);
+  return png_rgb_bytes(img, true);
 }
 
 // The heat maps' part of the page: the page-miss map is drawn from the data
@@ -196,7 +196,7 @@ std::string compare_html(const RgbImage& frame, const FrameComparison& c, nlohma
   std::ostringstream o;
   o << "<div><h2>Against " << html_text(c.against) << ": the largest channel difference per pixel</h2>"
     << "<img class=\"frame\" id=\"error_map\" alt=\"error heat map\" src=\"data:image/png;base64,"
-    << base64(png_rgb_bytes(map)) << "\"><p>"
+    << base64(png_rgb_bytes(map, true)) << "\"><p>"
     << (most ? "Dark: equal; blue 1 to red " + std::to_string(most) + " (the largest); " : std::string("Equal: "))
     << e.differing << " pixels differ.</p><div id=\"error_histogram\"></div></div>\n";
   return o.str();
@@ -217,8 +217,9 @@ nlohmann::json report_page_data(const nlohmann::json& report, const RunStats& s)
   return data;
 }
 
-std::string report_html(const nlohmann::json& page_data_in, const RgbImage& frame, const RunStats& s,
-                        const std::optional<FrameComparison>& compare, const std::optional<ChartLibrary>& charts) {
+std::string report_html(const nlohmann::json& page_data_in, const RgbImage& frame, const std::string& frame_png,
+                        const RunStats& s, const std::optional<FrameComparison>& compare,
+                        const std::optional<ChartLibrary>& charts) {
   nlohmann::json page_data = page_data_in;
   const std::string compared = compare ? compare_html(frame, *compare, page_data) : "";
   const nlohmann::json& r = page_data.at("report");
@@ -227,7 +228,7 @@ std::string report_html(const nlohmann::json& page_data_in, const RgbImage& fram
                  charts)
     << "<h1>girtd render</h1>\n<p id=\"verdict\"></p>\n"
     << "<div class=\"row\"><div><h2>Frame</h2><img class=\"frame\" alt=\"the frame\" src=\"data:image/png;base64,"
-    << base64(png_rgb_bytes(frame)) << "\"></div>\n" << heat_maps_html(s) << compared << "<div><h2>Run</h2><div id=\"run\"></div><div id=\"time\"></div>"
+    << base64(frame_png) << "\"></div>\n" << heat_maps_html(s) << compared << "<div><h2>Run</h2><div id=\"run\"></div><div id=\"time\"></div>"
     << "<div id=\"pixels\"></div></div></div>\n"
     << "<h2>Timelines: each stage over modeled time, and the FIFO in front of it</h2>\n"
     << "<p>Drag to zoom (all charts follow), double-click to reset.</p><div id=\"timelines\"></div>\n"

@@ -32,9 +32,11 @@ struct FrameComparison {
   RgbImage frame;       // its frame
 };
 
-// `s.maps`' DDA waste map and the comparison's heat map are inlined as
-// pictures (their pixels coloured here).
-std::string report_html(const nlohmann::json& page_data, const RgbImage& frame, const RunStats& s,
-                        const std::optional<FrameComparison>& compare, const std::optional<ChartLibrary>& charts);
+// `frame_png`: the frame as frame.png holds it (encoded once). `s.maps`'
+// DDA waste map and the comparison's heat map are inlined as pictures
+// (their pixels coloured here).
+std::string report_html(const nlohmann::json& page_data, const RgbImage& frame, const std::string& frame_png,
+                        const RunStats& s, const std::optional<FrameComparison>& compare,
+                        const std::optional<ChartLibrary>& charts);
 
 }  // namespace girtd
