@@ -83,6 +83,13 @@ struct RtlLayout {
 
 RtlLayout rtl_layout(const Params& p);
 
+// The frame clear through the VRAM's serial port, in base ticks, as hw/vram
+// takes it (a clear of 0 ticks takes 1).
+inline uint64_t frame_clear_ticks(const Params& p) {
+  const uint64_t t = uint64_t(p.vram_serial_transfers) * uint64_t(p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns));
+  return t ? t : 1;
+}
+
 // ceil(log2(n)) for n >= 1: the bits that count 0 .. n - 1.
 int bits_for(uint64_t n);
 

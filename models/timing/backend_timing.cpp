@@ -11,9 +11,7 @@ BackendTimingModel::BackendTimingModel(const Params& p)
       blend_(p.ticks(p.had_blend_extra_ns)),
       vram_(p.ticks(p.vram_cycle_ns)),
       limit_(p.fifo_dda_had_depth),
-      // hw/vram: a clear takes at least one tick.
-      clear_ticks_(std::max<uint64_t>(1, uint64_t(p.vram_serial_transfers) *
-                                             (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)))),
+      clear_ticks_(frame_clear_ticks(p)),
       write_behind_(p.had_write_behind),
       dirty_bits_(p.had_dirty_bits),
       layout_(rtl_layout(p)),

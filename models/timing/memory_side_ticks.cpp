@@ -10,8 +10,7 @@ MemorySideTicks::MemorySideTicks(const Params& p)
       access_(uint64_t(p.ticks(p.had_access_ns))),
       blend_(uint64_t(p.ticks(p.had_blend_extra_ns))),
       cycle_(std::max<uint64_t>(1, uint64_t(p.ticks(p.vram_cycle_ns)))),  // hw/vram: 0 ticks is 1
-      clear_ticks_(std::max<uint64_t>(1, uint64_t(p.vram_serial_transfers) *
-                                             uint64_t(p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)))),
+      clear_ticks_(frame_clear_ticks(p)),
       steal_period_(uint64_t(p.ticks(p.vram_steal_every_ns))),
       write_behind_(p.had_write_behind),
       prefetch_(p.had_prefetch),
