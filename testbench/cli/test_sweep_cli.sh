@@ -48,10 +48,11 @@ grep -q "$want" "$TMP/sweep_dom.html" && ok || bad "sweep.html chart: $(grep -o 
 # Killed after a few rows, then rerun: the same rows as the clean run.
 setsid "$GIRTD" sweep $S --jobs 2 --out "$TMP/b" > "$TMP/b.txt" 2>&1 &
 pid=$!
-for _ in $(seq 50); do [[ $(ls "$TMP/b/rows" 2>/dev/null | wc -l) -ge 20 ]] && break; sleep 0.2; done
+# Waits for rows, not for a time: a loaded CI machine wrote 13 rows in 10 s.
+for _ in $(seq 1200); do [[ $(ls "$TMP/b/rows" 2>/dev/null | grep -c '\.json$') -ge 10 ]] && break; sleep 0.25; done
 kill -- -"$pid" 2>/dev/null; wait "$pid" 2>/dev/null
 n=$(ls "$TMP/b/rows" | grep -c '\.json$')
-[[ $n -ge 20 && $n -lt 64 ]] && ok || bad "the kill came at $n rows"
+[[ $n -ge 10 && $n -lt 64 ]] && ok || bad "the kill came at $n rows"
 "$GIRTD" sweep $S --jobs 2 --out "$TMP/b" > "$TMP/b2.txt" 2>&1 && ok || bad "resumed sweep failed"
 grep -q "already in" "$TMP/b2.txt" && ok || bad "no resume line"
 norm='[.rows[] | del(.wall_s)] | sort_by(.point, .input)'
