@@ -55,6 +55,7 @@ module girtd_backend (
     output logic [girtd_pkg::COUNT_W-1:0] written_o, blended_o, z_rejected_o, dropped_o, page_misses_o,
     output logic [girtd_pkg::TICK_COUNT_W-1:0] had_busy_ticks_o, had_vram_wait_ticks_o,
     output logic [girtd_pkg::FIFO_COUNT_W-1:0] fifo_max_o,
+    output logic [girtd_pkg::FIFO_COUNT_W-1:0] fifo_count_o,  // pixels in the DDA -> HAD FIFO now
     output logic [8*girtd_pkg::COUNT_W-1:0] wraps_o,  // the DDA's numerics counters (hw/dda/dda_limits.sv)
     output logic [5*girtd_pkg::COUNT_W-1:0] clips_o,
     output logic [girtd_pkg::COUNT_W-1:0] triangles_affected_o, first_affected_o
@@ -130,6 +131,7 @@ module girtd_backend (
   assign dda_state_o = dda_state;
   assign dda_active_o = dda_active;
   assign pixel_push_o = push;
+  assign fifo_count_o = fifo_count;
   assign pixel_x_o = ox;
   assign pixel_y_o = oy;
 endmodule

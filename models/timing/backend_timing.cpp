@@ -20,6 +20,10 @@ BackendTimingModel::BackendTimingModel(const Params& p)
   if (p.had_prefetch || p.vram_steal_every_ns > 0) stepped_ = std::make_unique<MemorySideTicks>(p);
 }
 
+void BackendTimingModel::on_fifo_stay(std::function<void(uint64_t push, uint64_t pop)> f) {
+  if (stepped_) stepped_->on_pop(std::move(f));
+}
+
 uint64_t BackendTimingModel::next_en(uint64_t tick) const {
   return (tick + period_ - 1) / period_ * period_;
 }

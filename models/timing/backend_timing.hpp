@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -63,6 +64,13 @@ class BackendTimingModel {
   void drain();        // until the DDA and the HAD are idle
 
   const BackendTiming& timing() const { return t_; }
+  // Each pixel's push and pop ticks, in FIFO order (the FIFO's occupancy
+  // over time). Pixel by pixel, the pop is known as the pixel is pushed:
+  // last_stay() after pixel(); with the stepped memory side only once it
+  // leaves: told to `f` then.
+  bool stays_known_at_push() const { return !stepped_; }
+  std::pair<uint64_t, uint64_t> last_stay() const { return {pushes_.back(), pops_.back()}; }
+  void on_fifo_stay(std::function<void(uint64_t push, uint64_t pop)> f);
   // The tick the DDA can take its next parameter set (its first enabled
   // tick once the previous triangle is done), and a parameter set that
   // arrives later than that: the DDA idles until `tick`.

@@ -174,6 +174,7 @@ void MemorySideTicks::step() {
     case State::kIdle:
       if (pop) {
         pix_ = *head;
+        if (on_pop_) on_pop_(head->tick, now_);
         fifo_.pop_front();
       }
       if (pop && head_hit) {

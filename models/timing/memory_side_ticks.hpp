@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <vector>
 
 #include "config/params.hpp"
@@ -42,6 +43,8 @@ class MemorySideTicks {
   uint64_t busy_ticks() const { return busy_ticks_; }
   uint64_t vram_wait_ticks() const { return vram_wait_ticks_; }
   uint64_t fifo_max() const { return fifo_max_; }
+  // Called as each pixel leaves the FIFO: the ticks it was pushed and popped on.
+  void on_pop(std::function<void(uint64_t push, uint64_t pop)> f) { on_pop_ = std::move(f); }
 
  private:
   enum class State { kIdle, kWriteBack, kFetch, kAccess, kBlend, kFlush, kRefetch };
@@ -77,6 +80,7 @@ class MemorySideTicks {
   std::vector<uint32_t> page_;
   // counters, as the RTL's
   uint64_t page_misses_ = 0, busy_ticks_ = 0, vram_wait_ticks_ = 0, fifo_max_ = 0;
+  std::function<void(uint64_t, uint64_t)> on_pop_;
 };
 
 }  // namespace girtd

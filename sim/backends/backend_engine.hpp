@@ -16,6 +16,7 @@
 #include "config/params.hpp"
 #include "dda/dda_engine.hpp"
 #include "dda/dda_params.hpp"
+#include "backends/fifo_levels.hpp"
 #include "backends/prune_plan.hpp"
 #include "backends/screen_maps.hpp"
 #include "backends/sampled_timing.hpp"
@@ -66,6 +67,11 @@ class BackendEngine {
   virtual void prune(const PrunePlan& plan) { (void)plan; }
   // Where on the screen it spent its effort (report.html's heat maps).
   virtual std::optional<ScreenMaps> screen_maps() const { return std::nullopt; }
+  // The DDA -> HAD FIFO's largest count per bin of modeled time, up to `end` (a tick).
+  virtual std::optional<FifoSeries> fifo_levels(uint64_t end) const {
+    (void)end;
+    return std::nullopt;
+  }
   // Waveforms (rtl only): the RTL to record, and a call on every tick.
   virtual BackendRtl* rtl() { return nullptr; }
 };

@@ -14,22 +14,27 @@ ScreenMapRecorder::ScreenMapRecorder(const Params& p)
   m_.dda_waste.assign(size_t(p.screen_width) * size_t(p.screen_height), ScreenMaps::kNone);
 }
 
-void ScreenMapRecorder::begin_frame() { std::fill(slot_page_.begin(), slot_page_.end(), -1); }
+void ScreenMapRecorder::begin_frame() {
+  std::fill(slot_page_.begin(), slot_page_.end(), -1);
+  last_page_ = -1;
+}
 
-void ScreenMapRecorder::pixel(int x, int y) {
-  const uint32_t page = layout_.page.number_of(x, y);
+void ScreenMapRecorder::page_change(uint32_t page) {
   int64_t& in_slot = slot_page_[size_t(layout_.cache.slot_of(page))];
   if (in_slot != int64_t(page)) {
     ++m_.page_misses[page];
     in_slot = page;
   }
-  drawn_.push_back(uint32_t(y) * uint32_t(m_.width) + uint32_t(x));
+  last_page_ = page;
 }
 
 void ScreenMapRecorder::end_triangle(uint64_t dda_cycles, uint64_t emitted) {
   const uint8_t waste = dda_cycles ? uint8_t(254 * (dda_cycles - std::min(emitted, dda_cycles)) / dda_cycles) : 0;
-  for (uint32_t at : drawn_) m_.dda_waste[at] = waste;
+  if (run_.y >= 0) drawn_.push_back(run_);
+  for (const Run& r : drawn_)
+    std::fill_n(m_.dda_waste.begin() + ptrdiff_t(r.y) * m_.width + r.lo, r.hi - r.lo + 1, waste);
   drawn_.clear();
+  run_ = Run{};
 }
 
 }  // namespace girtd

@@ -19,6 +19,7 @@
 #include "cli/config_loader.hpp"
 #include "cli/output_set.hpp"
 #include "cli/leave_out_bench.hpp"
+#include "cli/series_cost_bench.hpp"
 #include "cli/pipeline_bench.hpp"
 #include "io/image_compare.hpp"
 #include "io/workload_list.hpp"
@@ -44,14 +45,16 @@ nlohmann::json measured_on() {
 
 }  // namespace
 
-int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool leave_out_only,
-              bool bless, bool option_matrix, const std::vector<std::string>& inputs) {
+int run_bench(const BenchArgs& a) {
+  const ConfigFiles& config = a.config;
+  const std::string& out_dir = a.out;
+  const bool bless = a.bless;
   const Params params = load_params(config);
   if (bless && !config.empty())
     throw InputError("--bless", 0, "the stored expectations are the thesis configuration's: bless without --config");
-  if (pipeline_only) {
-    const PipelineBench pb = option_matrix ? run_option_matrix_bench(config, out_dir, inputs)
-                                           : run_pipeline_bench(params, config, out_dir, bless, inputs);
+  if (a.pipeline_only) {
+    const PipelineBench pb = a.option_matrix ? run_option_matrix_bench(config, out_dir, a.inputs)
+                                             : run_pipeline_bench(params, config, out_dir, bless, a.inputs);
     OutputSet files(out_dir);
     files.add_text("pipeline.json", nlohmann::json{{"rows", pb.rows}, {"config", params.source}}.dump(2) + "\n");
     files.add_text("pipeline.md", "# girtd bench --pipeline\n" + pb.markdown);
@@ -60,7 +63,18 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
                 files.path("pipeline.md").c_str());
     return pb.failures ? 1 : 0;
   }
-  if (leave_out_only) {
+  if (a.speed_only) {
+    const SeriesCostBench sb = run_series_cost_bench(config, out_dir);
+    OutputSet files(out_dir);
+    files.add_text("speed.json", nlohmann::json{{"measured_on", measured_on()}, {"series_cost", sb.rows},
+                                                {"config", params.source}}
+                                     .dump(2) + "\n");
+    files.add_text("speed.md", "# girtd bench --speed\n" + sb.markdown);
+    files.commit();
+    std::printf("%d failure(s); wrote %s\n", sb.failures, files.path("speed.md").c_str());
+    return sb.failures ? 1 : 0;
+  }
+  if (a.leave_out_only) {
     const LeaveOutBench lb = run_leave_out_bench(config, out_dir);
     OutputSet files(out_dir);
     files.add_text("leave_out.json", nlohmann::json{{"measured_on", measured_on()}, {"culling", lb.culling},
@@ -131,6 +145,8 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
   md += pb.markdown;
   const WaveCostBench wb = run_wave_cost_bench(params, config, out_dir);
   md += wb.markdown;
+  const SeriesCostBench sb = run_series_cost_bench(config, out_dir);
+  md += sb.markdown;
   const LeaveOutBench lb = run_leave_out_bench(config, out_dir);
   md += lb.markdown;
   OutputSet files(out_dir);
@@ -139,6 +155,7 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
                                               {"timing", timing_rows},
                                               {"pipeline", pb.rows},
                                               {"wave_cost", wb.rows},
+                                              {"series_cost", sb.rows},
                                               {"culling", lb.culling},
                                               {"pruning", lb.pruning},
                                               {"config", params.source}}
@@ -150,7 +167,8 @@ int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeli
   std::printf("wrote %s and %s\n", files.path("bench.json").c_str(), files.path("bench.md").c_str());
   if (pb.failures) std::printf("%d failure(s) in the pipeline table (see above)\n", pb.failures);
   if (lb.failures) std::printf("%d failure(s) in the culling and pruning tables (see above)\n", lb.failures);
-  return pb.failures || lb.failures ? 1 : 0;
+  if (sb.failures) std::printf("%d failure(s) in the series cost table (see above)\n", sb.failures);
+  return pb.failures || lb.failures || sb.failures ? 1 : 0;
 }
 
 }  // namespace girtd

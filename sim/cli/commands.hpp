@@ -33,11 +33,15 @@ struct RenderArgs {
 int run_render(const RenderArgs& a);
 // campaign_only: the rows read from the study campaign's stored results.
 int run_claims(const ConfigFiles& config, bool campaign_only = false);
-// bless: rewrite the stored expectations from this run (cli/expectations.hpp).
-// option_matrix: the pipeline table under each memory-side option.
-// inputs: the pipeline table's (default: the sample workloads).
-int run_bench(const ConfigFiles& config, const std::string& out_dir, bool pipeline_only, bool leave_out_only, bool bless,
-              bool option_matrix, const std::vector<std::string>& inputs);
+struct BenchArgs {
+  ConfigFiles config;
+  std::string out = "out/bench";
+  bool pipeline_only = false, leave_out_only = false, speed_only = false;
+  bool bless = false;          // rewrite the stored expectations from this run (cli/expectations.hpp)
+  bool option_matrix = false;  // the pipeline table under each memory-side option
+  std::vector<std::string> inputs;  // the pipeline table's (default: the sample workloads)
+};
+int run_bench(const BenchArgs& a);
 struct RegressArgs {
   std::vector<std::string> traces;  // empty: every trace under traces/
   int random = 0;                   // extra random triangles

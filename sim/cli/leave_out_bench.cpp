@@ -6,6 +6,7 @@
 #include <fstream>
 #include <vector>
 
+#include "cli/bench_stats.hpp"
 #include "cli/child_render.hpp"
 #include "io/image_compare.hpp"
 #include "io/png_io.hpp"
@@ -18,11 +19,6 @@ namespace {
 
 constexpr int kPruneRuns = 5;
 constexpr const char* kCullingPreset = "config/presets/culling.json";
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 // Everything in a report but what pruning may change.
 nlohmann::json without_wall(nlohmann::json r) {

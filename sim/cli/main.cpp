@@ -67,31 +67,29 @@ int main(int argc, char** argv) {
   claims->add_flag("--campaign", claims_campaign,
                    "only chapter 5's rows read from the study campaign's stored results (fast; the README's table)");
 
-  ConfigFiles bench_config;
-  std::string bench_out = "out/bench";
+  BenchArgs ba;
   CLI::App* bench = app.add_subcommand("bench", "speed and error tables of the back ends");
-  bench->add_option("--config", bench_config, kConfigHelp)->allow_extra_args(false);
-  bench->add_option("--out", bench_out, "output directory")->capture_default_str();
-  bool bench_pipeline = false;
-  CLI::Option* pipeline_only = bench->add_flag("--pipeline", bench_pipeline,
+  bench->add_option("--config", ba.config, kConfigHelp)->allow_extra_args(false);
+  bench->add_option("--out", ba.out, "output directory")->capture_default_str();
+  CLI::Option* pipeline_only = bench->add_flag("--pipeline", ba.pipeline_only,
                   "only the SystemC pipeline's table (approx against rtl, every back end against the stored "
                   "expectations); exit 1 on a disagreement");
-  std::vector<std::string> bench_inputs;
   CLI::Option* inputs =
-      bench->add_option("inputs", bench_inputs, "with --pipeline: these inputs only (default: traces/workloads.txt)")
+      bench->add_option("inputs", ba.inputs, "with --pipeline: these inputs only (default: traces/workloads.txt)")
           ->check(CLI::ExistingFile)
           ->needs(pipeline_only);
-  bool bench_leave_out = false;
-  bench->add_flag("--leave-out", bench_leave_out,
+  CLI::Option* leave_out = bench->add_flag("--leave-out", ba.leave_out_only,
                   "only the culling (modeled) and pruning (wall time, median of 5) tables")
       ->excludes(pipeline_only);
-  bool bench_bless = false;
-  bench->add_flag("--bless", bench_bless, "with --pipeline: rewrite testbench/golden/expectations.json from this run")
+  bench->add_flag("--speed", ba.speed_only,
+                  "only the simulator's speed tables (what report.html's series cost; median of 5)")
+      ->excludes(pipeline_only)
+      ->excludes(leave_out);
+  bench->add_flag("--bless", ba.bless, "with --pipeline: rewrite testbench/golden/expectations.json from this run")
       ->needs(pipeline_only)
       ->excludes(inputs);
 
-  bool bench_options = false;
-  bench->add_flag("--options", bench_options,
+  bench->add_flag("--options", ba.option_matrix,
                   "with --pipeline: the table under each memory-side option alone and all together (write-behind, "
                   "prefetch, dirty bits, stolen VRAM cycles; default inputs: traces/accuracy_inputs.txt)")
       ->needs(pipeline_only)
@@ -160,13 +158,13 @@ int main(int argc, char** argv) {
         *stress;  // stress: the variant is built here, not inside a render's timeout
     const ConfigFiles& config = *render ? ra.config
                                 : *regress ? rg.config
-                                : *bench   ? bench_config
+                                : *bench   ? ba.config
                                 : *stress  ? st.config
                                            : claims_config;
     if (drives_rtl) run_in_rtl_variant_if_needed(load_params(config), argv);
     if (*render) return run_render(ra);
     if (*claims) return run_claims(claims_config, claims_campaign);
-    if (*bench) return run_bench(bench_config, bench_out, bench_pipeline, bench_leave_out, bench_bless, bench_options, bench_inputs);
+    if (*bench) return run_bench(ba);
     if (*regress) return run_regress(rg);
     if (*stress) return run_stress(st);
     if (*accuracy) return run_accuracy(ac);

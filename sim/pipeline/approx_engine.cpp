@@ -7,6 +7,7 @@
 #include "backends/golden_backend.hpp"
 #include "backends/render_session.hpp"
 #include "backends/backend_engine.hpp"
+#include "backends/series_switch.hpp"
 #include "timing/backend_timing.hpp"
 
 namespace girtd {
@@ -16,8 +17,10 @@ class ApproxEngine : public BackendEngine {
  public:
   ApproxEngine(const Params& p, std::optional<double> sample_rate)
       : period_ticks_(static_cast<uint64_t>(p.ticks(p.dda_clock_ns))), dda_(p), fb_(p.screen_width, p.screen_height, static_cast<uint16_t>(p.depth_clear)), had_(fb_, p.one_minus_nf),
-        timing_(p), maps_(p) {
+        timing_(p), maps_(p), fifo_levels_(p.base_tick_ns * 1e-9) {
     if (sample_rate) sampler_.emplace(*sample_rate);
+    if (series_) timing_.on_fifo_stay([this](uint64_t push, uint64_t pop) { fifo_levels_.interval(push, pop); });
+    stays_at_push_ = series_ && timing_.stays_known_at_push();
   }
   void prune(const PrunePlan& plan) override { dda_.skip_unreachable_wraps(plan.unreachable_wraps); }
   uint64_t ready_tick() override { return timing_.dda_ready_tick(); }
@@ -50,10 +53,11 @@ class ApproxEngine : public BackendEngine {
     timing_.begin_triangle();
     const DdaRunStats st = dda_.run(d, [&](const DdaEmit& e) {
       timing_.pixel({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel, d.layer, e.covered)});
-      maps_.pixel(e.pixel.x, e.pixel.y);
+      if (stays_at_push_) fifo_levels_.interval(timing_.last_stay().first, timing_.last_stay().second);
+      if (series_) maps_.pixel(e.pixel.x, e.pixel.y);
     });
     timing_.end_triangle(st.cycles);
-    maps_.end_triangle(st.cycles, st.emitted);
+    if (series_) maps_.end_triangle(st.cycles, st.emitted);
     accumulate(r_.dda, st);
     ++r_.triangles_drawn;
     r_.pixels_generated += st.emitted;
@@ -81,7 +85,14 @@ class ApproxEngine : public BackendEngine {
     if (sampler_) r.sampling = sampler_->stats();
     return r;
   }
-  std::optional<ScreenMaps> screen_maps() const override { return maps_.maps(); }
+  std::optional<ScreenMaps> screen_maps() const override {
+    if (!series_) return std::nullopt;
+    return maps_.maps();
+  }
+  std::optional<FifoSeries> fifo_levels(uint64_t end) const override {
+    if (!series_) return std::nullopt;
+    return fifo_levels_.series(end);
+  }
   RgbImage shown() const override { return shown_image(fb_); }
   std::vector<uint16_t> z_plane() const override { return fb_.z_plane(); }
 
@@ -94,6 +105,9 @@ class ApproxEngine : public BackendEngine {
   BackendResult r_;
   std::optional<TriangleSampler> sampler_;
   ScreenMapRecorder maps_;
+  FifoLevels fifo_levels_;
+  bool series_ = record_series();
+  bool stays_at_push_ = false;  // the FIFO's series fed pixel by pixel here, not by the model's callback
 };
 
 }  // namespace

@@ -101,7 +101,7 @@ void BackendStage::run() {
     const uint64_t from = engine_.now_tick();
     work();
     frame_ticks_ += engine_.now_tick() - from;
-    timeline_.read(engine_.now_tick(), engine_.counters());
+    if (series_) timeline_.read(engine_.now_tick(), engine_.counters());
   };
   for (;;) {
     const uint64_t before = engine_.now_tick();  // the run's end, if the next token is the last
@@ -116,7 +116,7 @@ void BackendStage::run() {
       case TokenKind::kItem:
         ++a_.items;
         engine_.draw(tok.item);
-        timeline_.read(engine_.now_tick(), engine_.counters());
+        if (series_) timeline_.read(engine_.now_tick(), engine_.counters());
         if (progress_ && (++triangles & 15) == 0) progress_(tok.frame, triangles, at(engine_.now_tick()).to_seconds());
         break;
       case TokenKind::kFrameEnd:

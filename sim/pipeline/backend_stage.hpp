@@ -17,6 +17,7 @@
 #include "pipeline/stage_activity.hpp"
 #include "pipeline/token.hpp"
 #include "rtl/backend_rtl.hpp"
+#include "backends/series_switch.hpp"
 #include "wave/wave_recorder.hpp"
 
 namespace girtd {
@@ -77,6 +78,7 @@ class BackendStage : public sc_core::sc_module {
   uint64_t frame_ticks_ = 0;
   std::vector<uint64_t> frame_end_ticks_, frame_end_pixels_;
   CounterTimeline timeline_;
+  bool series_ = record_series();
 };
 
 }  // namespace girtd

@@ -76,6 +76,10 @@ void PipelineElaboration::collect(RunStats& s) const {
   had.blocked_s = 0.0;
   had.stall_s = *had.starved_s;
   had.fifo_in_max = be.fifo_max;
+  if (const auto levels = engine_->fifo_levels(back_end_->end_tick())) {
+    had.fifo_in_bin_s = levels->bin_s();
+    for (const auto& bin : levels->bins()) had.fifo_in_series.push_back(bin[0]);
+  }
   had.series_bin_s = back_end_->timeline().had().bin_s();
   had.series = back_end_->timeline().had().bins();
   s.stages.push_back(had);

@@ -33,6 +33,7 @@ class ScreenMappedEngine : public BackendEngine {
     dda_.skip_unreachable_wraps(plan.unreachable_wraps);
   }
   std::optional<ScreenMaps> screen_maps() const override { return maps_.maps(); }
+  std::optional<FifoSeries> fifo_levels(uint64_t end) const override { return inner_->fifo_levels(end); }
   BackendRtl* rtl() override { return inner_->rtl(); }
 
  private:

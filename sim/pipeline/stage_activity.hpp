@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "backends/series_switch.hpp"
 #include "pipeline/time_series.hpp"
 
 namespace girtd {
@@ -18,20 +19,21 @@ struct FifoActivity {
   uint64_t max_occupancy = 0;
   FifoSeries occupancy{true};
   void push(double t_s) {
-    occupancy.note_max(0, last_s_, t_s, double(pushed - popped));
+    if (record_) occupancy.note_max(0, last_s_, t_s, double(pushed - popped));
     ++pushed;
     if (pushed - popped > max_occupancy) max_occupancy = pushed - popped;
-    occupancy.note_max(0, t_s, t_s, double(pushed - popped));
+    if (record_) occupancy.note_max(0, t_s, t_s, double(pushed - popped));
     last_s_ = t_s;
   }
   void pop(double t_s) {
-    occupancy.note_max(0, last_s_, t_s, double(pushed - popped));
+    if (record_) occupancy.note_max(0, last_s_, t_s, double(pushed - popped));
     ++popped;
     last_s_ = t_s;
   }
 
  private:
   double last_s_ = 0;
+  bool record_ = record_series();
 };
 
 enum class StageState : uint8_t { kStarved, kBusy, kBlocked };

@@ -54,7 +54,7 @@ class TimedStage : public sc_core::sc_module {
       const double now = sc_core::sc_time_stamp().to_seconds();
       in_fifo_.pop(now);
       a_.starved_s += now - t0.to_seconds();
-      a_.series.add_span(size_t(StageState::kStarved), t0.to_seconds(), now);
+      if (series_) a_.series.add_span(size_t(StageState::kStarved), t0.to_seconds(), now);
       work_.clear();
       switch (tok.kind) {
         case TokenKind::kItem:
@@ -89,7 +89,7 @@ class TimedStage : public sc_core::sc_module {
         a_.busy_s += busy;
         const double from = sc_core::sc_time_stamp().to_seconds();
         wait(sc_core::sc_time(busy, sc_core::SC_SEC));
-        a_.series.add_span(size_t(StageState::kBusy), from, sc_core::sc_time_stamp().to_seconds());
+        if (series_) a_.series.add_span(size_t(StageState::kBusy), from, sc_core::sc_time_stamp().to_seconds());
       }
       if (s.out) {
         ++a_.emitted;
@@ -106,9 +106,10 @@ class TimedStage : public sc_core::sc_module {
     const double now = sc_core::sc_time_stamp().to_seconds();
     out_fifo_.push(now);
     a_.blocked_s += now - t0.to_seconds();
-    a_.series.add_span(size_t(StageState::kBlocked), t0.to_seconds(), now);
+    if (series_) a_.series.add_span(size_t(StageState::kBlocked), t0.to_seconds(), now);
   }
 
+  bool series_ = record_series();
   double rate_;
   ItemFn on_item_;
   FrameFn on_begin_, on_end_;

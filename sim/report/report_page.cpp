@@ -107,7 +107,7 @@ function build() {
                           {label: 'blocked', stroke: '#2166ac', width: 1}]},
                 [x, frac(1), frac(0), frac(2)], box);
     } else {
-      box.appendChild(el('p', 'not sampled on this back end'));
+      box.appendChild(el('p', 'not recorded on this back end or run'));
     }
     if (st.fifo_in.length) {
       const x = st.fifo_in.map((_, i) => i * st.fifo_in_bin_s * 1e3);

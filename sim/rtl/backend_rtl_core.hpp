@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "backends/series_switch.hpp"
 #include "common/input_error.hpp"
 #include "rtl/backend_rtl.hpp"
 #include "config/rtl_layout.hpp"
@@ -30,7 +31,8 @@ struct HasFstTrace<M, std::void_t<decltype(std::declval<M&>().trace(std::declval
 template <typename Model>
 class BackendRtlCore final : public BackendRtl {
  public:
-  BackendRtlCore(const Params& p, uint32_t x_seed) : params_(p), layout_(rtl_layout(p)) {
+  BackendRtlCore(const Params& p, uint32_t x_seed)
+      : params_(p), layout_(rtl_layout(p)), fifo_levels_(p.base_tick_ns * 1e-9) {
     if (x_seed != 0) {
       ctx_.randReset(2);
       ctx_.randSeed(static_cast<int>(x_seed));
@@ -151,6 +153,10 @@ class BackendRtlCore final : public BackendRtl {
     const Model& t = *top_;
     return {t.dda_clocks_o, t.dda_wait_ticks_o, t.had_busy_ticks_o};
   }
+  std::optional<FifoSeries> fifo_levels(uint64_t end) const override {
+    if (!series_) return std::nullopt;
+    return fifo_levels_.series(end);
+  }
   BackendResult result() const override {
     const Model& t = *top_;
     BackendResult r;
@@ -234,6 +240,7 @@ class BackendRtlCore final : public BackendRtl {
     t.clk_i = 1;
     t.eval();
     ++ticks_;
+    if (series_) fifo_levels_.level(ticks_, t.fifo_count_o);
     if (on_tick_) {
       probe.rising = true;
       on_tick_(probe);
@@ -251,6 +258,8 @@ class BackendRtlCore final : public BackendRtl {
   std::array<uint64_t, static_cast<size_t>(DdaState::kCount)> state_clocks_{};
   uint64_t triangles_ = 0;
   std::vector<int> source_lines_;  // of each parameter set drawn (the first affected one's line)
+  FifoLevels fifo_levels_;
+  bool series_ = record_series();
   std::function<void(const BackendRtl::TickProbe&)> on_tick_;
 };
 

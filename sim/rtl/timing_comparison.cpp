@@ -24,6 +24,9 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
 
   const auto t0 = clock::now();
   BackendTimingModel model(p);
+  FifoLevels levels(p.base_tick_ns * 1e-9);
+  model.on_fifo_stay([&](uint64_t push, uint64_t pop) { levels.interval(push, pop); });  // stepped
+  const bool at_push = model.stays_known_at_push();
   DdaEngine dda(p);
   FrameBuffer fb(p.screen_width, p.screen_height, uint16_t(p.depth_clear));
   Had had(fb, p.one_minus_nf);
@@ -36,12 +39,18 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
       const DdaRunStats st = dda.run(d, [&](const DdaEmit& e) {
         pixels.push_back({e.cycle, e.pixel.x, e.pixel.y, had.update(e.pixel)});
       });
-      model.triangle(st.cycles, pixels);
+      model.begin_triangle();
+      for (const TimedPixel& px : pixels) {
+        model.pixel(px);
+        if (at_push) levels.interval(model.last_stay().first, model.last_stay().second);
+      }
+      model.end_triangle(st.cycles);
     }
     model.end_frame();
     fb.swap();
   }
   c.model = model.timing();
+  c.model_fifo = levels.series(c.model.ticks);
   // Made (and reset) outside the timed part, as the pipeline's is.
   const std::unique_ptr<BackendRtl> made = make_backend_rtl(p);
   BackendRtl& rtl = *made;
@@ -52,6 +61,7 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
     rtl.end_frame();
   }
   c.rtl = rtl.result();
+  c.rtl_fifo = *rtl.fifo_levels(c.rtl.ticks);
   const auto t2 = clock::now();
   c.model_wall_s = std::chrono::duration<double>(t1 - t0).count();
   c.rtl_wall_s = std::chrono::duration<double>(t2 - t1).count();

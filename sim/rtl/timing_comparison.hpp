@@ -6,6 +6,7 @@
 #include <string>
 
 #include "config/params.hpp"
+#include "backends/fifo_levels.hpp"
 #include "rtl/backend_rtl.hpp"
 #include "timing/backend_timing.hpp"
 
@@ -14,6 +15,7 @@ namespace girtd {
 struct TimingComparison {
   BackendTiming model;
   BackendResult rtl;
+  FifoSeries model_fifo, rtl_fifo;  // the DDA -> HAD FIFO's largest count per bin
   double model_wall_s = 0;  // golden DDA + HAD + event model
   double rtl_wall_s = 0;    // the Verilated back end alone
 };

@@ -1,14 +1,21 @@
 // The back end's event timing model (models/timing) against the RTL back end
 // (hw/backend) on the sample traces: the same page misses, DDA waits and
-// tick count.
+// tick count, and the same FIFO occupancy over time.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <vector>
 
 #include "rtl/timing_comparison.hpp"
 
 namespace girtd {
 namespace {
+
+double max_of(const FifoSeries& s) {
+  double m = 0;
+  for (const auto& bin : s.bins()) m = std::max(m, bin[0]);
+  return m;
+}
 
 void check_trace(const std::string& path, const Params& p = Params::defaults()) {
   const TimingComparison c = compare_timing(p, path);
@@ -21,6 +28,10 @@ void check_trace(const std::string& path, const Params& p = Params::defaults()) 
   CHECK(c.model.ticks == c.rtl.ticks);
   CHECK(c.model.had_busy_ticks == c.rtl.had_busy_ticks);
   CHECK(c.model.had_vram_wait_ticks == c.rtl.had_vram_wait_ticks);
+  // report.html's occupancy chart of the DDA -> HAD FIFO: the same bins, the same peaks.
+  CHECK(c.model_fifo.bin_s() == c.rtl_fifo.bin_s());
+  CHECK(c.model_fifo.bins() == c.rtl_fifo.bins());
+  CHECK(double(c.rtl.fifo_max) == max_of(c.rtl_fifo));
 }
 
 // The memory-side options, alone and together (run-time inputs of the

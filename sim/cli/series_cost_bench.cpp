@@ -1,0 +1,95 @@
+#include "cli/series_cost_bench.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <vector>
+
+#include "cli/bench_stats.hpp"
+#include "cli/child_render.hpp"
+
+namespace girtd {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kRuns = 5;
+// A trace the HAD bounds, with thousands of triangles; a model of twelve
+// large ones (the rtl replays each in the golden DDA for the heat maps).
+const char* const kInputs[] = {"traces/demo.trace", "traces/models/cube.off"};
+
+struct Timed {
+  nlohmann::json report;
+  double process_s = 0;
+};
+
+Timed render_timed(const std::string& input, const std::string& backend, const std::string& dir,
+                   const ConfigFiles& config, bool series) {
+  // Set only around the child: this process records no series of its own meanwhile.
+  if (!series) setenv("GIRTD_NO_SERIES", "1", 1);
+  const auto t0 = std::chrono::steady_clock::now();
+  Timed t{render_in_child(input, backend, dir, config), 0};
+  t.process_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  unsetenv("GIRTD_NO_SERIES");
+  return t;
+}
+
+// The same run but for wall time and the page's charts.
+bool same_run(nlohmann::json a, nlohmann::json b) {
+  for (nlohmann::json* r : {&a, &b}) r->erase("wall_s");
+  return a == b;
+}
+
+}  // namespace
+
+SeriesCostBench run_series_cost_bench(const ConfigFiles& config, const std::string& out_dir) {
+  SeriesCostBench b;
+  const std::string dir = out_dir + "/series_cost";
+  b.markdown =
+      "\n## What report.html's series cost (median of 5 renders each, in turn, each in its own process)\n\n"
+      "With: the stage timelines, the heat maps and the FIFOs' occupancy recorded, as every timed run does. "
+      "Without: `GIRTD_NO_SERIES=1`. `wall_s` covers the simulation, where they are recorded; the process "
+      "time adds loading the input and writing frame.png, report.json and report.html.\n\n"
+      "| input | back end | wall s with | without | cost | process s with | without | cost | same report |\n"
+      "|---|---|---|---|---|---|---|---|---|\n";
+  for (const char* input : kInputs) {
+    for (const char* backend : {"approx", "rtl"}) {
+      const std::string base = dir + "/" + fs::path(input).filename().string() + "-" + backend;
+      std::vector<double> wall_on, wall_off, proc_on, proc_off;
+      Timed on, off;
+      for (int i = 0; i < kRuns; ++i) {  // each first every other time
+        if (i % 2) off = render_timed(input, backend, base + "-without", config, false);
+        on = render_timed(input, backend, base + "-with", config, true);
+        if (i % 2 == 0) off = render_timed(input, backend, base + "-without", config, false);
+        if (on.report.is_null() || off.report.is_null()) break;
+        wall_on.push_back(on.report.at("wall_s"));
+        wall_off.push_back(off.report.at("wall_s"));
+        proc_on.push_back(on.process_s);
+        proc_off.push_back(off.process_s);
+      }
+      if (on.report.is_null() || off.report.is_null()) {
+        ++b.failures;
+        b.markdown += std::string("| ") + input + " | " + backend + " | render failed |\n";
+        continue;
+      }
+      const bool same = same_run(on.report, off.report);
+      b.failures += !same;
+      const double wn = median(wall_on), wf = median(wall_off), pn = median(proc_on), pf = median(proc_off);
+      const double wall_cost = wf > 0 ? wn / wf - 1 : 0, proc_cost = pf > 0 ? pn / pf - 1 : 0;
+      b.rows.push_back({{"input", input}, {"backend", backend}, {"wall_s_with", wn}, {"wall_s_without", wf},
+                        {"wall_cost", wall_cost}, {"process_s_with", pn}, {"process_s_without", pf},
+                        {"process_cost", proc_cost}, {"same_report", same}});
+      char line[512];
+      std::snprintf(line, sizeof line, "| %s | %s | %.3f | %.3f | %+.1f %% | %.3f | %.3f | %+.1f %% | %s |\n",
+                    fs::path(input).filename().c_str(), backend, wn, wf, 100 * wall_cost, pn, pf, 100 * proc_cost,
+                    same ? "yes" : "NO");
+      b.markdown += line;
+      std::fputs(line, stdout);
+      std::fflush(stdout);
+    }
+  }
+  return b;
+}
+
+}  // namespace girtd

@@ -1,0 +1,25 @@
+// What report.html's series cost (`girtd bench`): the stage timelines, the
+// heat maps and the FIFOs' occupancy, recorded on every timed run. Each
+// input renders on approx and rtl with them and without (GIRTD_NO_SERIES,
+// backends/series_switch.hpp), five times each in turn, each in its own
+// process: the median `wall_s` (the simulation, where the series are
+// recorded) and the median whole process (writing the page included).
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/config_loader.hpp"
+
+namespace girtd {
+
+struct SeriesCostBench {
+  std::string markdown;
+  nlohmann::json rows = nlohmann::json::array();
+  int failures = 0;  // a render failed, or the two differ in anything but wall time
+};
+
+SeriesCostBench run_series_cost_bench(const ConfigFiles& config, const std::string& out_dir);
+
+}  // namespace girtd
