@@ -48,6 +48,12 @@ module girtd_backend (
     // ... and the pixel the DDA pushes into the FIFO on this tick, if any.
     output logic        pixel_push_o,
     output logic [girtd_pkg::SCREEN_BITS-1:0] pixel_x_o, pixel_y_o,
+    // Simulation: the tick warp. This edge stands for ticks_i base ticks (tie
+    // to 1 in hardware); more than one only when quiet_o, the ticks from this
+    // one on in which no unit decides anything (only timers and counters
+    // run), is at least that many: the harness skips them in one evaluation.
+    input  logic [girtd_pkg::LONG_TIME_W-1:0] ticks_i,
+    output logic [girtd_pkg::LONG_TIME_W-1:0] quiet_o,
     // Counters
     output logic [girtd_pkg::TICK_COUNT_W-1:0] dda_clocks_o,     // DDA clocks spent on triangles
     output logic [girtd_pkg::TICK_COUNT_W-1:0] dda_wait_ticks_o, // DDA clocks lost waiting on a full FIFO (in ticks)
@@ -62,16 +68,41 @@ module girtd_backend (
 );
   localparam int CW = girtd_pkg::FIFO_COUNT_W;
 
-  // DDA clock enable: one tick in dda_period_ticks_i.
+  // Configuration registers: the timing and the options are written while
+  // rst_ni is low and held from then on, so no logic hangs on those inputs
+  // (a Verilated model evaluates everything fed by a top input on every
+  // eval, whether or not it changed).
+  logic [girtd_pkg::DDA_PERIOD_W-1:0] dda_period_q;
+  logic [girtd_pkg::TIME_W-1:0] had_access_q, had_blend_q, vram_cycle_q;
+  logic [girtd_pkg::LONG_TIME_W-1:0] clear_ticks_q, vram_steal_period_q;
+  logic [girtd_pkg::FIFO_COUNT_W-1:0] fifo_limit_q;
+  logic write_behind_q, prefetch_q, dirty_bits_q, one_minus_exact_q, walk_fix_q, pipelined_compare_q;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      dda_period_q <= dda_period_ticks_i;
+      had_access_q <= had_access_ticks_i;
+      had_blend_q <= had_blend_ticks_i;
+      vram_cycle_q <= vram_cycle_ticks_i;
+      clear_ticks_q <= clear_ticks_i;
+      vram_steal_period_q <= vram_steal_period_ticks_i;
+      fifo_limit_q <= fifo_limit_i;
+      {write_behind_q, prefetch_q, dirty_bits_q} <= {write_behind_i, prefetch_i, dirty_bits_i};
+      {one_minus_exact_q, walk_fix_q, pipelined_compare_q} <= {one_minus_exact_i, walk_fix_i, pipelined_compare_i};
+    end
+  end
+
+  // DDA clock enable: one tick in dda_period_q.
   logic [girtd_pkg::DDA_PERIOD_W-1:0] dda_tick_q;
   logic dda_en;
   assign dda_en = dda_tick_q == '0;
+  localparam int LT = girtd_pkg::LONG_TIME_W;
   always_ff @(posedge clk_i) begin
-    if (!rst_ni || dda_tick_q + 1'b1 >= dda_period_ticks_i) dda_tick_q <= '0;
-    else dda_tick_q <= dda_tick_q + 1'b1;
+    if (!rst_ni || LT'(dda_tick_q) + ticks_i >= LT'(dda_period_q)) dda_tick_q <= '0;
+    else dda_tick_q <= dda_tick_q + girtd_pkg::DDA_PERIOD_W'(ticks_i);
   end
 
-  logic out_valid, fifo_full, fifo_empty, fifo_pop, dda_active, dda_stall;
+  logic out_valid, fifo_full, fifo_empty, fifo_pop, dda_active, dda_stall, dda_still;
+  logic [LT-1:0] dda_quiet, had_quiet, vram_quiet, mem_quiet;
   logic [girtd_pkg::FIFO_X_W-1:0] ox;
   logic [girtd_pkg::FIFO_Y_W-1:0] oy;
   logic [girtd_pkg::FIFO_R_W-1:0] orr;
@@ -81,37 +112,40 @@ module girtd_backend (
   logic [girtd_pkg::FIFO_Z_W-1:0] oz;
   logic [girtd_pkg::DDA_STATE_W-1:0] dda_state;
   dda u_dda (
-      .clk_i, .rst_ni, .en_i(dda_en), .walk_fix_i, .pipelined_compare_i, .in_valid_i, .in_ready_o,
+      .clk_i, .rst_ni, .en_i(dda_en), .walk_fix_i(walk_fix_q), .pipelined_compare_i(pipelined_compare_q), .in_valid_i,
+      .in_ready_o,
       .x0_i, .y0_i, .xmin_i, .xmax_i, .ymax_i, .q_zero_i, .q_k_i, .hard_edges_i, .clamped_i,
       .r_i, .r_dx_i, .r_dy_i, .g_i, .g_dx_i, .g_dy_i, .b_i, .b_dx_i, .b_dy_i, .t_i, .t_dx_i, .t_dy_i,
       .z_i, .z_dx_i, .z_dy_i, .d1_i, .d1_dx_i, .d1_dy_i, .d2_i, .d2_dx_i, .d2_dy_i, .d3_i, .d3_dx_i, .d3_dy_i,
       .out_valid_o(out_valid), .out_ready_i(!fifo_full), .out_x_o(ox), .out_y_o(oy), .out_r_o(orr),
       .out_g_o(og), .out_b_o(ob), .out_nf_o(onf), .out_z_o(oz), .active_o(dda_active), .stall_o(dda_stall),
-      .state_o(dda_state), .wraps_o, .clips_o, .triangles_affected_o, .first_affected_o);
+      .state_o(dda_state), .still_o(dda_still), .wraps_o, .clips_o, .triangles_affected_o, .first_affected_o);
 
   logic push;
   logic [girtd_pkg::FIFO_W-1:0] fifo_data;
   logic [CW-1:0] fifo_count;
   assign push = dda_en && out_valid && !fifo_full;
   pixel_fifo #(.W(girtd_pkg::FIFO_W), .DEPTH(girtd_pkg::FIFO_MAX_DEPTH)) u_fifo (
-      .clk_i, .rst_ni, .limit_i(fifo_limit_i), .push_i(push), .data_i({ox, oy, orr, og, ob, onf, oz}),
+      .clk_i, .rst_ni, .limit_i(fifo_limit_q), .push_i(push), .data_i({ox, oy, orr, og, ob, onf, oz}),
       .full_o(fifo_full), .pop_i(fifo_pop), .data_o(fifo_data), .empty_o(fifo_empty), .count_o(fifo_count));
 
   logic vram_req, vram_we, vram_busy, vram_done, had_idle;
   logic [girtd_pkg::PAGE_NUMBER_W-1:0] vram_page;
   logic [girtd_pkg::PAGE_PIXELS*girtd_pkg::CELL_W-1:0] vram_wdata, vram_rdata;
   had u_had (
-      .clk_i, .rst_ni, .access_ticks_i(had_access_ticks_i), .blend_ticks_i(had_blend_ticks_i),
-      .one_minus_exact_i, .write_behind_i, .prefetch_i, .dirty_bits_i, .fifo_empty_i(fifo_empty), .fifo_data_i(fifo_data),
+      .clk_i, .rst_ni, .access_ticks_i(had_access_q), .blend_ticks_i(had_blend_q),
+      .one_minus_exact_i(one_minus_exact_q), .write_behind_i(write_behind_q), .prefetch_i(prefetch_q),
+      .dirty_bits_i(dirty_bits_q), .fifo_empty_i(fifo_empty), .fifo_data_i(fifo_data),
       .fifo_pop_o(fifo_pop), .vram_req_o(vram_req), .vram_we_o(vram_we), .vram_page_o(vram_page),
       .vram_wdata_o(vram_wdata), .vram_rdata_i(vram_rdata), .vram_busy_i(vram_busy), .vram_done_i(vram_done),
-      .flush_i, .idle_o(had_idle), .written_o, .blended_o, .z_rejected_o, .dropped_o, .page_misses_o,
+      .flush_i, .idle_o(had_idle), .ticks_i, .quiet_o(had_quiet), .written_o, .blended_o, .z_rejected_o, .dropped_o, .page_misses_o,
       .busy_ticks_o(had_busy_ticks_o), .vram_wait_ticks_o(had_vram_wait_ticks_o));
 
   vram u_vram (
-      .clk_i, .rst_ni, .cycle_ticks_i(vram_cycle_ticks_i), .clear_ticks_i, .steal_period_ticks_i(vram_steal_period_ticks_i), .req_i(vram_req), .we_i(vram_we),
+      .clk_i, .rst_ni, .cycle_ticks_i(vram_cycle_q), .clear_ticks_i(clear_ticks_q),
+      .steal_period_ticks_i(vram_steal_period_q), .req_i(vram_req), .we_i(vram_we),
       .page_i(vram_page), .wdata_i(vram_wdata), .rdata_o(vram_rdata), .busy_o(vram_busy), .done_o(vram_done),
-      .clear_i, .background_i, .swap_i, .front_o);
+      .clear_i, .background_i, .swap_i, .front_o, .ticks_i, .quiet_o(vram_quiet));
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -121,11 +155,24 @@ module girtd_backend (
       fifo_max_o <= '0;
     end else begin
       if (dda_active) dda_clocks_o <= dda_clocks_o + 1'b1;
-      if (dda_stall) dda_wait_ticks_o <= dda_wait_ticks_o + girtd_pkg::TICK_COUNT_W'(dda_period_ticks_i);
+      if (dda_stall) dda_wait_ticks_o <= dda_wait_ticks_o + girtd_pkg::TICK_COUNT_W'(dda_period_q);
       if (push) pixels_generated_o <= pixels_generated_o + 1'b1;
       if (fifo_count > fifo_max_o) fifo_max_o <= fifo_count;
     end
   end
+
+  // The tick warp's bound. The DDA is quiet until its next enabled tick; on
+  // an enabled tick, when still (stalled, or idle and empty), for the whole
+  // period: a warp then holds that one enabled tick, which only counts the wait.
+  assign dda_quiet = !dda_en ? LT'(dda_period_q) - LT'(dda_tick_q) : dda_still ? LT'(dda_period_q) : '0;
+  assign mem_quiet = had_quiet < vram_quiet ? had_quiet : vram_quiet;
+  assign quiet_o = dda_quiet < mem_quiet ? dda_quiet : mem_quiet;
+
+`ifndef SYNTHESIS
+  // A driver that warps over a tick something happens on breaks exactness.
+  always_ff @(posedge clk_i)
+    if (rst_ni && ticks_i > 1 && ticks_i > quiet_o) $error("girtd_backend: ticks_i %0d over quiet_o %0d", ticks_i, quiet_o);
+`endif
 
   assign idle_o = in_ready_o && !out_valid && dda_state == girtd_pkg::S_IDLE && fifo_empty && had_idle && !vram_busy;
   assign dda_state_o = dda_state;

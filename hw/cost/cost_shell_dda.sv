@@ -40,6 +40,6 @@ module cost_shell_dda (
       .d3_dy_i(sr_q[B+9*C+3*T+3*Z+8*D+:D]),
       .out_valid_o(out_valid), .out_ready_i(sr_q[N-1]), .out_x_o(ox), .out_y_o(oy), .out_r_o(orr),
       .out_g_o(og), .out_b_o(ob), .out_nf_o(onf), .out_z_o(oz), .active_o(active), .stall_o(stall),
-      .state_o(state), .wraps_o(), .clips_o(), .triangles_affected_o(), .first_affected_o());
+      .state_o(state), .still_o(), .wraps_o(), .clips_o(), .triangles_affected_o(), .first_affected_o());
   always_ff @(posedge clk_i) serial_o <= ^{out_valid, in_ready, active, stall, ox, oy, orr, og, ob, onf, oz, state};
 endmodule

@@ -9,10 +9,10 @@ module cost_shell_ep #(
     output logic serial_o
 );
   localparam int O = girtd_pkg::OP_W;
-  logic [3 * W + O - 1:0] sr_q;
+  logic [3 * W + O:0] sr_q;  // op, value, dx, dy, load
   logic signed [W-1:0] value, dx;
-  always_ff @(posedge clk_i) sr_q <= {sr_q[3*W+O-2:0], serial_i};
-  dda_ep #(.W(W)) u_ep (.clk_i, .op_i(sr_q[O-1:0]), .value_i(sr_q[O+:W]), .dx_i(sr_q[O+W+:W]),
+  always_ff @(posedge clk_i) sr_q <= {sr_q[3*W+O-1:0], serial_i};
+  dda_ep #(.W(W)) u_ep (.clk_i, .load_i(sr_q[3*W+O]), .op_i(sr_q[O-1:0]), .value_i(sr_q[O+:W]), .dx_i(sr_q[O+W+:W]),
                         .dy_i(sr_q[O+2*W+:W]), .value_o(value), .dx_o(dx), .wrapped_o());
   always_ff @(posedge clk_i) serial_o <= ^{value, dx};
 endmodule

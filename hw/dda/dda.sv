@@ -49,6 +49,10 @@ module dda #(
     output logic                                 active_o,
     output logic                                 stall_o,
     output logic [girtd_pkg::DDA_STATE_W-1:0]    state_o,
+    // An enabled clock now would change nothing but the wait count: stalled,
+    // or idle with its output registers empty (a parameter set offered on
+    // in_valid_i is the driver's to know). For hw/backend's tick warp.
+    output logic                                 still_o,
     // Numerics (report.json `numerics`, models/dda/ep_numerics.hpp): per EP in
     // the order R, G, B, T, Z, D1, D2, D3, clocks or pixels that used a
     // wrapped value; per R, G, B, T, Z pixels whose output clipped
@@ -73,8 +77,8 @@ module dda #(
   logic q_zero_q;
   logic [2:0] hard_q;
   logic signed [girtd_pkg::Q_K_W-1:0] q_k_q;
-  logic [girtd_pkg::OP_W-1:0] op;
-  logic emit, stall;
+  logic [girtd_pkg::OP_W-1:0] op;  // the sequencer's operation (never OP_LOAD: `load` is apart)
+  logic load, emit, stall;
 
   // ---- Element processors ----
   logic [XY_W-1:0] x, y;
@@ -87,24 +91,24 @@ module dda #(
                  GZ = WRAP_DETECT ? girtd_pkg::Z_GUARD : 0, GD = WRAP_DETECT ? girtd_pkg::D_GUARD : 0;
 
   dda_counter #(.W(XY_W), .INC_OP(girtd_pkg::OP_XINC), .DEC_OP(girtd_pkg::OP_XDEC))
-      u_x (.clk_i, .op_i(op), .value_i(x0_i), .value_o(x));
+      u_x (.clk_i, .load_i(load), .op_i(op), .value_i(x0_i), .value_o(x));
   dda_counter #(.W(XY_W), .INC_OP(girtd_pkg::OP_YINC), .CAN_DEC(1'b0))
-      u_y (.clk_i, .op_i(op), .value_i(y0_i), .value_o(y));
-  dda_ep #(.W(girtd_pkg::COLOR_W), .G(GC)) u_r (.clk_i, .op_i(op), .value_i(r_i), .dx_i(r_dx_i), .dy_i(r_dy_i),
+      u_y (.clk_i, .load_i(load), .op_i(op), .value_i(y0_i), .value_o(y));
+  dda_ep #(.W(girtd_pkg::COLOR_W), .G(GC)) u_r (.clk_i, .load_i(load), .op_i(op), .value_i(r_i), .dx_i(r_dx_i), .dy_i(r_dy_i),
                                         .value_o(r), .dx_o(r_dx_unused), .wrapped_o(wrapped[0]));
-  dda_ep #(.W(girtd_pkg::COLOR_W), .G(GC)) u_g (.clk_i, .op_i(op), .value_i(g_i), .dx_i(g_dx_i), .dy_i(g_dy_i),
+  dda_ep #(.W(girtd_pkg::COLOR_W), .G(GC)) u_g (.clk_i, .load_i(load), .op_i(op), .value_i(g_i), .dx_i(g_dx_i), .dy_i(g_dy_i),
                                         .value_o(g), .dx_o(g_dx_unused), .wrapped_o(wrapped[1]));
-  dda_ep #(.W(girtd_pkg::COLOR_W), .G(GC)) u_b (.clk_i, .op_i(op), .value_i(b_i), .dx_i(b_dx_i), .dy_i(b_dy_i),
+  dda_ep #(.W(girtd_pkg::COLOR_W), .G(GC)) u_b (.clk_i, .load_i(load), .op_i(op), .value_i(b_i), .dx_i(b_dx_i), .dy_i(b_dy_i),
                                         .value_o(b), .dx_o(b_dx_unused), .wrapped_o(wrapped[2]));
-  dda_ep #(.W(girtd_pkg::T_W), .G(GT)) u_t (.clk_i, .op_i(op), .value_i(t_i), .dx_i(t_dx_i), .dy_i(t_dy_i),
+  dda_ep #(.W(girtd_pkg::T_W), .G(GT)) u_t (.clk_i, .load_i(load), .op_i(op), .value_i(t_i), .dx_i(t_dx_i), .dy_i(t_dy_i),
                                     .value_o(t), .dx_o(t_dx_unused), .wrapped_o(wrapped[3]));
-  dda_ep #(.W(girtd_pkg::Z_W), .G(GZ)) u_z (.clk_i, .op_i(op), .value_i(z_i), .dx_i(z_dx_i), .dy_i(z_dy_i),
+  dda_ep #(.W(girtd_pkg::Z_W), .G(GZ)) u_z (.clk_i, .load_i(load), .op_i(op), .value_i(z_i), .dx_i(z_dx_i), .dy_i(z_dy_i),
                                     .value_o(z), .dx_o(z_dx_unused), .wrapped_o(wrapped[4]));
-  dda_ep #(.W(girtd_pkg::D_W), .G(GD)) u_d1 (.clk_i, .op_i(op), .value_i(d1_i), .dx_i(d1_dx_i), .dy_i(d1_dy_i),
+  dda_ep #(.W(girtd_pkg::D_W), .G(GD)) u_d1 (.clk_i, .load_i(load), .op_i(op), .value_i(d1_i), .dx_i(d1_dx_i), .dy_i(d1_dy_i),
                                      .value_o(d[0]), .dx_o(d_dx[0]), .wrapped_o(wrapped[5]));
-  dda_ep #(.W(girtd_pkg::D_W), .G(GD)) u_d2 (.clk_i, .op_i(op), .value_i(d2_i), .dx_i(d2_dx_i), .dy_i(d2_dy_i),
+  dda_ep #(.W(girtd_pkg::D_W), .G(GD)) u_d2 (.clk_i, .load_i(load), .op_i(op), .value_i(d2_i), .dx_i(d2_dx_i), .dy_i(d2_dy_i),
                                      .value_o(d[1]), .dx_o(d_dx[1]), .wrapped_o(wrapped[6]));
-  dda_ep #(.W(girtd_pkg::D_W), .G(GD)) u_d3 (.clk_i, .op_i(op), .value_i(d3_i), .dx_i(d3_dx_i), .dy_i(d3_dy_i),
+  dda_ep #(.W(girtd_pkg::D_W), .G(GD)) u_d3 (.clk_i, .load_i(load), .op_i(op), .value_i(d3_i), .dx_i(d3_dx_i), .dy_i(d3_dy_i),
                                      .value_o(d[2]), .dx_o(d_dx[2]), .wrapped_o(wrapped[7]));
 
   // ---- Coverage, nf and the output stages ----
@@ -164,11 +168,7 @@ module dda #(
     first_d = first_q;
     if (!hold) begin
       unique case (state_q)
-        S_IDLE: if (in_valid_i) begin
-          op = girtd_pkg::OP_LOAD;
-          state_d = S_CHECK;
-          first_d = 1'b1;
-        end
+        S_IDLE: ;  // the load (below) is the one decision on an input
         S_CHECK: begin
           first_d = 1'b0;
           if (y_past_end) state_d = S_IDLE;
@@ -249,6 +249,11 @@ module dda #(
     end
   end
 
+  // Taking a parameter set: IDLE on an enabled clock with one offered. Kept
+  // out of the sequencer's case so that only this gate, the EPs' load muxes
+  // and the limit registers depend on the input port.
+  assign load = state_q == S_IDLE && !hold && in_valid_i;
+
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       state_q <= S_IDLE;
@@ -256,12 +261,12 @@ module dda #(
       walk_left_q <= 1'b0;
       first_q <= 1'b0;
     end else begin
-      state_q <= state_d;
+      state_q <= load ? S_CHECK : state_d;
       after_wait_q <= after_wait_d;
       walk_left_q <= walk_left_d;
-      first_q <= first_d;
+      first_q <= load || first_d;
     end
-    if (op == girtd_pkg::OP_LOAD) begin
+    if (load) begin
       xmin_q <= xmin_i;
       xmax_q <= xmax_i;
       ymax_q <= ymax_i;
@@ -298,6 +303,12 @@ module dda #(
   assign active_o = state_q != S_IDLE && !hold;
   assign stall_o = en_i && stall && state_q != S_IDLE;
   assign state_o = state_q;
+  logic out_regs_empty;
+  always_comb begin
+    out_regs_empty = 1'b1;
+    for (int i = 0; i < L; i++) if (valid_q[i]) out_regs_empty = 1'b0;
+  end
+  assign still_o = stall || (state_q == S_IDLE && out_regs_empty);
 
   // ---- Numerics: the clocks that read D1..D3 (as models/dda counts them:
   // every test of the edges within the X limits) and the emitted pixels ----
@@ -315,7 +326,7 @@ module dda #(
   end
   if (WRAP_DETECT) begin : g_limits
     dda_limits u_limits (
-        .clk_i, .rst_ni, .load_i(op == girtd_pkg::OP_LOAD), .clamped_i, .end_i(tri_end),
+        .clk_i, .rst_ni, .load_i(load), .clamped_i, .end_i(tri_end),
         .wrap_use_i({{3{d_read}} & wrapped[7:5], {5{emit}} & wrapped[4:0]}),
         .clip_i({5{emit}} & {clipped[4], clipped[3] && !t_is_one, clipped[2:0]}),
         .wraps_o, .clips_o, .triangles_affected_o, .first_affected_o);

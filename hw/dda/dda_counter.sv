@@ -7,6 +7,7 @@ module dda_counter #(
     parameter logic [girtd_pkg::OP_W-1:0] DEC_OP = girtd_pkg::OP_XDEC
 ) (
     input  logic         clk_i,
+    input  logic         load_i,  // a parameter set is taken: value_i (apart from op_i, as in dda_ep)
     input  logic [girtd_pkg::OP_W-1:0] op_i,
     input  logic [W-1:0] value_i,
     output logic [W-1:0] value_o
@@ -15,14 +16,13 @@ module dda_counter #(
 
   always_comb begin
     value_d = value_q;
-    if (op_i == girtd_pkg::OP_LOAD) value_d = value_i;
-    else if (op_i == INC_OP) value_d = value_q + 1'b1;
+    if (op_i == INC_OP) value_d = value_q + 1'b1;
     else if (CAN_DEC && op_i == DEC_OP) value_d = value_q - 1'b1;
     else if (op_i == girtd_pkg::OP_RESTORE) value_d = aux_q;
   end
 
   always_ff @(posedge clk_i) begin
-    value_q <= value_d;
+    value_q <= load_i ? value_i : value_d;
     if (op_i == girtd_pkg::OP_SAVE) aux_q <= value_q;
   end
 

@@ -11,8 +11,12 @@ module dda_ep #(
     parameter int G = 0
 ) (
     input  logic                clk_i,
-    input  logic [girtd_pkg::OP_W-1:0] op_i,
-    input  logic signed [W-1:0] value_i,  // start value, taken on OP_LOAD
+    // The load comes apart from the sequencer's operation: op_i depends on
+    // registers only, so no adder's mux hangs on the DDA's input port (a
+    // Verilated model evaluates logic fed by top inputs on every eval).
+    input  logic                load_i,   // a parameter set is taken: value_i, dx_i, dy_i
+    input  logic [girtd_pkg::OP_W-1:0] op_i,  // never OP_LOAD
+    input  logic signed [W-1:0] value_i,
     input  logic signed [W-1:0] dx_i,
     input  logic signed [W-1:0] dy_i,
     output logic signed [W-1:0] value_o,
@@ -26,7 +30,6 @@ module dda_ep #(
   always_comb begin
     value_d = value_q;
     unique case (op_i)
-      girtd_pkg::OP_LOAD:    value_d = X'(value_i);
       girtd_pkg::OP_XINC:    value_d = value_q + X'(dx_q);
       girtd_pkg::OP_XDEC:    value_d = value_q - X'(dx_q);
       girtd_pkg::OP_YINC:    value_d = value_q + X'(dy_q);
@@ -36,8 +39,8 @@ module dda_ep #(
   end
 
   always_ff @(posedge clk_i) begin
-    value_q <= value_d;
-    if (op_i == girtd_pkg::OP_LOAD) begin
+    value_q <= load_i ? X'(value_i) : value_d;
+    if (load_i) begin
       dx_q <= dx_i;
       dy_q <= dy_i;
     end

@@ -37,6 +37,11 @@ module had (
     // Frame end: write the cache page back and forget it
     input  logic        flush_i,
     output logic        idle_o,
+    // Simulation (girtd_backend's tick warp): this edge stands for ticks_i
+    // base ticks (1 in hardware), more only over ticks quiet_o promises in
+    // which the HAD does nothing but count.
+    input  logic [girtd_pkg::LONG_TIME_W-1:0] ticks_i,
+    output logic [girtd_pkg::LONG_TIME_W-1:0] quiet_o,
     // Pixel accounting and time (counters, reset with rst_ni)
     output logic [girtd_pkg::COUNT_W-1:0] written_o,
     output logic [girtd_pkg::COUNT_W-1:0] blended_o,
@@ -247,10 +252,10 @@ module had (
         pf_valid_q <= 1'b1;
         pf_data_q <= vram_rdata_i;
       end
-      if (state_q != H_IDLE || fifo_pop_o) busy_ticks_o <= busy_ticks_o + 1'b1;
+      if (state_q != H_IDLE || fifo_pop_o) busy_ticks_o <= busy_ticks_o + girtd_pkg::TICK_COUNT_W'(ticks_i);
       if (state_q == H_WB || state_q == H_REFETCH || (state_q == H_FETCH && !use_pf_q) ||
           (state_q == H_IDLE && !fifo_empty_i && !head_hit && !fifo_pop_o))
-        vram_wait_ticks_o <= vram_wait_ticks_o + 1'b1;
+        vram_wait_ticks_o <= vram_wait_ticks_o + girtd_pkg::TICK_COUNT_W'(ticks_i);
       unique case (state_q)
         H_IDLE: begin
           if (fifo_pop_o) pix_q <= fifo_data_i;
@@ -284,7 +289,7 @@ module had (
           count_q <= access_ticks_i == 0 ? ONE_TICK : access_ticks_i;
         end
         H_ACCESS: begin
-          if (count_q > ONE_TICK) count_q <= count_q - 1'b1;
+          if (count_q > ONE_TICK) count_q <= count_q - girtd_pkg::TIME_W'(ticks_i);
           else if (!z_pass) begin
             z_rejected_o <= z_rejected_o + 1'b1;
             state_q <= H_IDLE;
@@ -304,7 +309,7 @@ module had (
           end
         end
         H_BLEND: begin
-          if (count_q > ONE_TICK) count_q <= count_q - 1'b1;
+          if (count_q > ONE_TICK) count_q <= count_q - girtd_pkg::TIME_W'(ticks_i);
           else state_q <= H_IDLE;
         end
         H_FLUSH: if (vram_done_i || !flush_write_back) begin
@@ -314,6 +319,24 @@ module had (
         default: state_q <= H_IDLE;
       endcase
     end
+  end
+
+  // Ticks from this one on in which nothing is decided: no pop, no VRAM
+  // request, no cache write, no state change. Waits for the VRAM last until
+  // its own quiet_o runs out (a page arrives, the port frees); an access or a
+  // blend until its count reaches one.
+  localparam logic [girtd_pkg::LONG_TIME_W-1:0] FOREVER = '1;
+  always_comb begin
+    unique case (state_q)
+      H_IDLE: quiet_o = fifo_pop_o || miss_go || flush_step || wb_issue ? '0 : FOREVER;
+      H_ACCESS, H_BLEND:
+        quiet_o = count_q > ONE_TICK && !wb_issue && !pf_issue ? girtd_pkg::LONG_TIME_W'(count_q) - 1'b1 : '0;
+      H_WB: quiet_o = vram_done_i ? '0 : FOREVER;
+      H_REFETCH: quiet_o = vram_busy_i ? FOREVER : '0;
+      H_FETCH: quiet_o = use_pf_q || vram_done_i ? '0 : FOREVER;
+      H_FLUSH: quiet_o = vram_done_i || !flush_write_back ? '0 : FOREVER;
+      default: quiet_o = '0;
+    endcase
   end
 
   assign idle_o = state_q == H_IDLE && !flush_pending_q && !wb_pending_q && !pf_loading_q;

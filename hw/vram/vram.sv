@@ -3,7 +3,7 @@
 // random-port cycle moves a whole page. A pixel's word address is {page
 // number, pixel in the page} (girtd_pkg::PAGE_*). Behavioural: the array is read and written at the end
 // of a cycle of `cycle_ticks_i`; the frame clear goes through the serial port
-// and takes `clear_ticks_i`. The array is public for the testbench backdoor
+// and takes `clear_ticks_i`. The array is readable (public_flat_rd: never written from outside, so no logic is re-evaluated for it on every eval) for the testbench backdoor
 // and kept out of waveforms.
 // Word: RGB buffer 0, RGB buffer 1, Z (girtd_pkg::VRAM_*).
 module vram #(
@@ -29,13 +29,18 @@ module vram #(
     input  logic            clear_i,  // back buffer <- background, Z <- FFFF
     input  logic [RGB-1:0]  background_i,
     input  logic            swap_i,
-    output logic            front_o   // the buffer shown: 0 = bits 63:40
+    output logic            front_o,  // the buffer shown: 0 = bits 63:40
+    // Simulation (girtd_backend's tick warp): this edge stands for ticks_i
+    // base ticks (1 in hardware), more only over ticks quiet_o promises in
+    // which the VRAM does nothing but count down its cycle and the steal period.
+    input  logic [girtd_pkg::LONG_TIME_W-1:0] ticks_i,
+    output logic [girtd_pkg::LONG_TIME_W-1:0] quiet_o
 );
   localparam int LT = girtd_pkg::LONG_TIME_W, N = girtd_pkg::PAGE_PIXELS, CW = girtd_pkg::CELL_W;
   localparam int IW = girtd_pkg::PAGE_INDEX_W, ZO = girtd_pkg::Z_OUT;
   localparam int B0 = girtd_pkg::VRAM_RGB0_LSB, B1 = girtd_pkg::VRAM_RGB1_LSB, ZL = girtd_pkg::VRAM_Z_LSB;
   localparam logic [ZO-1:0] Z_CLEAR = ZO'(girtd_pkg::Z_CLEAR);
-  logic [girtd_pkg::VRAM_W-1:0] mem[1 << (2 * girtd_pkg::SCREEN_BITS)]  /*verilator public*/;
+  logic [girtd_pkg::VRAM_W-1:0] mem[1 << (2 * girtd_pkg::SCREEN_BITS)]  /*verilator public_flat_rd*/;
   logic [LT-1:0] left_q;  // ticks left in the current operation
   logic busy_q, we_q, front_q, clearing_q, stealing_q;
   logic [girtd_pkg::PAGE_NUMBER_W-1:0] page_q;
@@ -53,8 +58,10 @@ module vram #(
   logic port_busy, clear_pending_q;
   assign finishing = busy_q && left_q == LT'(1);
   assign port_busy = busy_q && !finishing;
-  // A due stolen cycle or a pending clear goes before any request.
-  assign busy_o = port_busy || steal_due_q || clear_pending_q || clear_i;
+  // A due stolen cycle or a pending clear goes before any request. (The
+  // clear's own request tick is not in it: the harness asks for a clear only
+  // with the back end idle, and no logic hangs on the clear_i input.)
+  assign busy_o = port_busy || steal_due_q || clear_pending_q;
   assign done_o = finishing && !clearing_q && !stealing_q;
   assign front_o = front_q;
 
@@ -71,13 +78,13 @@ module vram #(
     end else begin
       if (swap_i) front_q <= !front_q;
       if (steal_period_ticks_i != 0) begin
-        if (steal_count_q + 1'b1 >= steal_period_ticks_i) steal_count_q <= '0;
-        else steal_count_q <= steal_count_q + 1'b1;
+        if (steal_count_q + ticks_i >= steal_period_ticks_i) steal_count_q <= '0;
+        else steal_count_q <= steal_count_q + ticks_i;
       end
       // Owed steals: one more when the period elapses, one less when a steal starts.
       steals_owed_q <= steals_owed_q + 8'(steal_period_ticks_i != 0 && steal_count_q + 1'b1 >= steal_period_ticks_i &&
                                           steals_owed_q != 8'hFF) - 8'(!port_busy && steal_due_q);
-      if (busy_q) left_q <= left_q - 1'b1;
+      if (busy_q) left_q <= left_q - ticks_i;
       if (finishing) begin
         busy_q <= 1'b0;
         clearing_q <= 1'b0;
@@ -106,6 +113,21 @@ module vram #(
       end
     end
   end
+
+`ifndef SYNTHESIS
+  // busy_o does not cover the clear's own request tick (see above).
+  always_ff @(posedge clk_i)
+    if (rst_ni && clear_i && req_i) $error("vram: a page request on the tick a clear is asked for (it would be lost)");
+`endif
+
+  // Quiet ticks: before the tick an operation finishes, and, idle, until
+  // something is asked for; in both, before the tick a stolen cycle comes due.
+  localparam logic [LT-1:0] FOREVER = '1;
+  logic [LT-1:0] port_quiet, steal_quiet;
+  assign port_quiet = busy_q ? (finishing ? '0 : left_q - 1'b1) : (steal_due_q || clear_pending_q || req_i ? '0 : FOREVER);
+  assign steal_quiet = steal_period_ticks_i == 0 ? FOREVER
+                     : steal_count_q + 1'b1 >= steal_period_ticks_i ? '0 : steal_period_ticks_i - 1'b1 - steal_count_q;
+  assign quiet_o = port_quiet < steal_quiet ? port_quiet : steal_quiet;
 
   // The array itself: behavioural, written at the end of an operation. Blocking
   // writes inside loops (Verilator cannot schedule delayed ones to an array in

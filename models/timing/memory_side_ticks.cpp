@@ -27,7 +27,7 @@ void MemorySideTicks::push(uint32_t page, HadOutcome outcome, uint64_t tick) {
 
 bool MemorySideTicks::vram_busy() const {
   const bool port_busy = vbusy_ && left_ != 1;
-  return port_busy || steals_owed_ != 0 || clear_pending_ || clear_in_;
+  return port_busy || steals_owed_ != 0 || clear_pending_;  // as hw/vram: not the clear request's own tick
 }
 
 bool MemorySideTicks::idle() const {

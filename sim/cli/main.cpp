@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
                   "only the culling (modeled) and pruning (wall time, median of 5) tables")
       ->excludes(pipeline_only);
   bench->add_flag("--speed", ba.speed_only,
-                  "only the simulator's speed tables (what report.html's series cost; median of 5)")
+                  "only the simulator's speed tables (rtl DDA clocks per wall second against the DDA alone; what report.html's series cost; medians of 5)")
       ->excludes(pipeline_only)
       ->excludes(leave_out);
   bench->add_flag("--bless", ba.bless, "with --pipeline: rewrite testbench/golden/expectations.json from this run")

@@ -3,7 +3,9 @@
 // backend_rtl.cpp and backend_rtl_traced.cpp instantiate it.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -64,7 +66,8 @@ class BackendRtlCore final : public BackendRtl {
     t.in_valid_i = 0;
     t.clear_i = t.flush_i = t.swap_i = 0;
     t.rst_ni = 0;
-    for (int i = 0; i < 4; ++i) tick();
+    t.ticks_i = 1;
+    for (int i = 0; i < 4; ++i) tick(kOneTick);
     t.rst_ni = 1;
     ticks_ = 0;
     state_clocks_.fill(0);
@@ -78,7 +81,7 @@ class BackendRtlCore final : public BackendRtl {
     const int c = params_.ep_color.out_bits;
     set_port(t.background_i, (int64_t(bg.r) << (2 * c)) | (int64_t(bg.g) << c) | bg.b, 3 * c);
     t.clear_i = 1;
-    tick();
+    tick(kOneTick);
     t.clear_i = 0;
     drain();
   }
@@ -93,7 +96,8 @@ class BackendRtlCore final : public BackendRtl {
       t.clk_i = 0;
       t.eval();
       const bool taken = t.in_ready_o;  // ready only on a DDA clock: the load happens at this edge
-      tick();
+      // The RTL's quiet_o cannot see the offer: an enabled tick is never warped over here.
+      tick(ticks_ % period_ == 0 ? kOneTick : UINT64_MAX);
       if (taken) break;
       if (guard > (uint64_t{1} << 28)) throw std::logic_error("RTL DDA did not take a parameter set within 2^28 ticks");
     }
@@ -104,12 +108,12 @@ class BackendRtlCore final : public BackendRtl {
     Model& t = *top_;
     drain();
     t.flush_i = 1;
-    tick();
+    tick(kOneTick);
     t.flush_i = 0;
-    tick();
+    tick(kOneTick);
     drain();
     t.swap_i = 1;
-    tick();
+    tick(kOneTick);
     t.swap_i = 0;
   }
 
@@ -142,7 +146,7 @@ class BackendRtlCore final : public BackendRtl {
           continue;
         }
       }
-      tick();
+      tick(target - ticks_);
     }
   }
 
@@ -227,7 +231,12 @@ class BackendRtlCore final : public BackendRtl {
     }
   }
 
-  void tick() {
+  // One base tick, or up to `most` ticks at once where the RTL says nothing
+  // but its timers and counters would run in them (its quiet_o: the tick
+  // warp, hw/backend). Ticks that carry a control pulse, and every tick
+  // while a hook watches (waveforms), are single.
+  static constexpr uint64_t kOneTick = 1;
+  void tick(uint64_t most = UINT64_MAX) {
     Model& t = *top_;
     t.clk_i = 0;
     t.eval();
@@ -237,16 +246,18 @@ class BackendRtlCore final : public BackendRtl {
       probe = {ticks_ + 1, false, bool(t.pixel_push_o), int(t.pixel_x_o), int(t.pixel_y_o)};
       on_tick_(probe);
     }
+    const uint64_t span = on_tick_ ? 1 : std::max<uint64_t>(1, std::min<uint64_t>(t.quiet_o, most));
+    t.ticks_i = static_cast<uint32_t>(span);
     t.clk_i = 1;
     t.eval();
-    ++ticks_;
+    ticks_ += span;
     if (series_) fifo_levels_.level(ticks_, t.fifo_count_o);
     if (on_tick_) {
       probe.rising = true;
       on_tick_(probe);
     }
   }
-  const auto& vram() const { return top_->rootp->vlSymsp->TOP__girtd_backend__u_vram.mem; }
+  const auto& vram() const { return top_->rootp->girtd_backend__DOT__u_vram__DOT__mem; }
   static uint64_t bits(uint64_t word, const BitField& f) { return (word >> f.lsb) & uint64_t(max_of_bits(f.width)); }
 
   const Params& params_;
