@@ -147,6 +147,8 @@ module girtd_backend (
       .page_i(vram_page), .wdata_i(vram_wdata), .rdata_o(vram_rdata), .busy_o(vram_busy), .done_o(vram_done),
       .clear_i, .background_i, .swap_i, .front_o, .ticks_i, .quiet_o(vram_quiet));
 
+  logic [LT-1:0] stalled_ticks;
+  assign stalled_ticks = ticks_i > LT'(dda_period_q) ? ticks_i : LT'(dda_period_q);
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       dda_clocks_o <= '0;
@@ -155,17 +157,24 @@ module girtd_backend (
       fifo_max_o <= '0;
     end else begin
       if (dda_active) dda_clocks_o <= dda_clocks_o + 1'b1;
-      if (dda_stall) dda_wait_ticks_o <= dda_wait_ticks_o + girtd_pkg::TICK_COUNT_W'(dda_period_q);
+      // A period per stalled DDA clock; a warp from a stalled clock spans
+      // whole periods (quiet_o), each a stalled clock.
+      if (dda_stall)
+        dda_wait_ticks_o <= dda_wait_ticks_o + girtd_pkg::TICK_COUNT_W'(stalled_ticks);
       if (push) pixels_generated_o <= pixels_generated_o + 1'b1;
       if (fifo_count > fifo_max_o) fifo_max_o <= fifo_count;
     end
   end
 
-  // The tick warp's bound. The DDA is quiet until its next enabled tick; on
-  // an enabled tick, when still (stalled, or idle and empty), for the whole
-  // period: a warp then holds that one enabled tick, which only counts the wait.
-  assign dda_quiet = !dda_en ? LT'(dda_period_q) - LT'(dda_tick_q) : dda_still ? LT'(dda_period_q) : '0;
+  // The tick warp's bound. Between enabled ticks the DDA is quiet until the
+  // next one. On an enabled tick, still (stalled, or idle and empty), it
+  // stays so for as long as the memory side decides nothing (only a pop ends
+  // a stall): then whole periods, each enabled tick of which only counts
+  // the wait, or less than one.
+  logic [LT-1:0] still_quiet;
   assign mem_quiet = had_quiet < vram_quiet ? had_quiet : vram_quiet;
+  assign still_quiet = mem_quiet < LT'(dda_period_q) ? mem_quiet : mem_quiet - mem_quiet % LT'(dda_period_q);
+  assign dda_quiet = !dda_en ? LT'(dda_period_q) - LT'(dda_tick_q) : dda_still ? still_quiet : '0;
   assign quiet_o = dda_quiet < mem_quiet ? dda_quiet : mem_quiet;
 
 `ifndef SYNTHESIS

@@ -246,7 +246,8 @@ class BackendRtlCore final : public BackendRtl {
       probe = {ticks_ + 1, false, bool(t.pixel_push_o), int(t.pixel_x_o), int(t.pixel_y_o)};
       on_tick_(probe);
     }
-    const uint64_t span = on_tick_ ? 1 : std::max<uint64_t>(1, std::min<uint64_t>(t.quiet_o, most));
+    uint64_t span = on_tick_ ? 1 : std::max<uint64_t>(1, std::min<uint64_t>(t.quiet_o, most));
+    if (span > period_) span -= span % period_;  // from an enabled tick, whole DDA periods (quiet_o's)
     t.ticks_i = static_cast<uint32_t>(span);
     t.clk_i = 1;
     t.eval();
