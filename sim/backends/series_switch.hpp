@@ -1,6 +1,6 @@
 // report.html's series — the stage timelines, the heat maps, the FIFOs'
 // occupancy — are recorded on every timed run unless the environment sets
-// GIRTD_NO_SERIES: `girtd bench --pipeline` renders with and without it to
+// GIRTD_NO_SERIES: `girtd bench --speed` renders with and without it to
 // measure what they cost (the page then shows its tables only).
 #pragma once
 

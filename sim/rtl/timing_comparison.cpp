@@ -61,7 +61,8 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
     rtl.end_frame();
   }
   c.rtl = rtl.result();
-  c.rtl_fifo = *rtl.fifo_levels(c.rtl.ticks);
+  // None recorded under GIRTD_NO_SERIES: then the RTL's series stays empty.
+  if (const auto levels = rtl.fifo_levels(c.rtl.ticks)) c.rtl_fifo = *levels;
   const auto t2 = clock::now();
   c.model_wall_s = std::chrono::duration<double>(t1 - t0).count();
   c.rtl_wall_s = std::chrono::duration<double>(t2 - t1).count();
