@@ -53,7 +53,10 @@ class ApproxEngine : public BackendEngine {
     timing_.begin_triangle();
     const DdaRunStats st = dda_.run(d, [&](const DdaEmit& e) {
       timing_.pixel({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel, d.layer, e.covered)});
-      if (stays_at_push_) fifo_levels_.interval(timing_.last_stay().first, timing_.last_stay().second);
+      if (stays_at_push_) {
+        const auto [push, pop] = timing_.last_stay();
+        fifo_levels_.interval(push, pop);
+      }
       if (series_) maps_.pixel(e.pixel.x, e.pixel.y);
     });
     timing_.end_triangle(st.cycles);

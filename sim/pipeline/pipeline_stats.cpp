@@ -6,10 +6,10 @@
 namespace girtd {
 namespace {
 
-void take_fifo_series(const FifoActivity& f, StageStats& st) {
-  st.fifo_in_bin_s = f.occupancy.bin_s();
+void take_fifo_series(const FifoSeries& s, StageStats& st) {
+  st.fifo_in_bin_s = s.bin_s();
   st.fifo_in_series.clear();
-  for (const auto& bin : f.occupancy.bins()) st.fifo_in_series.push_back(bin[0]);
+  for (const auto& bin : s.bins()) st.fifo_in_series.push_back(bin[0]);
 }
 
 }  // namespace
@@ -52,7 +52,7 @@ void PipelineElaboration::collect(RunStats& s) const {
     st.frame_end_s = a->frame_end_s;
     st.series_bin_s = a->series.bin_s();
     st.series = a->series.bins();
-    take_fifo_series(*in_fifo_.at(a.get()), st);
+    take_fifo_series(in_fifo_.at(a.get())->occupancy, st);
     s.stages.push_back(st);
   }
   const double clock_s = p_.dda_clock_ns * 1e-9;
@@ -64,7 +64,7 @@ void PipelineElaboration::collect(RunStats& s) const {
   dda.blocked_s = double(be.dda_wait_ticks) * tick_s;
   dda.stall_s = *dda.starved_s + *dda.blocked_s;
   dda.fifo_in_max = in_fifo_.at(back_activity_)->max_occupancy;
-  take_fifo_series(*in_fifo_.at(back_activity_), dda);
+  take_fifo_series(in_fifo_.at(back_activity_)->occupancy, dda);
   dda.series_bin_s = back_end_->timeline().dda().bin_s();
   dda.series = back_end_->timeline().dda().bins();
   s.stages.push_back(dda);
@@ -76,10 +76,7 @@ void PipelineElaboration::collect(RunStats& s) const {
   had.blocked_s = 0.0;
   had.stall_s = *had.starved_s;
   had.fifo_in_max = be.fifo_max;
-  if (const auto levels = engine_->fifo_levels(back_end_->end_tick())) {
-    had.fifo_in_bin_s = levels->bin_s();
-    for (const auto& bin : levels->bins()) had.fifo_in_series.push_back(bin[0]);
-  }
+  if (const auto levels = engine_->fifo_levels(back_end_->end_tick())) take_fifo_series(*levels, had);
   had.series_bin_s = back_end_->timeline().had().bin_s();
   had.series = back_end_->timeline().had().bins();
   s.stages.push_back(had);

@@ -48,8 +48,7 @@ class BackendRtlCore final : public BackendRtl {
     set_port(t.had_access_ticks_i, p.ticks(p.had_access_ns), kRtlTimeBits);
     set_port(t.had_blend_ticks_i, p.ticks(p.had_blend_extra_ns), kRtlTimeBits);
     set_port(t.vram_cycle_ticks_i, p.ticks(p.vram_cycle_ns), kRtlTimeBits);
-    set_port(t.clear_ticks_i, int64_t(p.vram_serial_transfers) * (p.ticks(p.vram_serial_ns) + p.ticks(p.vram_cycle_ns)),
-             kRtlLongTimeBits);
+    set_port(t.clear_ticks_i, int64_t(frame_clear_ticks(p)), kRtlLongTimeBits);
     set_port(t.vram_steal_period_ticks_i, p.ticks(p.vram_steal_every_ns), kRtlLongTimeBits);
     period_ = static_cast<uint64_t>(p.ticks(p.dda_clock_ns));
     steal_period_ = static_cast<uint64_t>(p.ticks(p.vram_steal_every_ns));

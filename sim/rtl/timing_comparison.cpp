@@ -42,7 +42,10 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
       model.begin_triangle();
       for (const TimedPixel& px : pixels) {
         model.pixel(px);
-        if (at_push) levels.interval(model.last_stay().first, model.last_stay().second);
+        if (at_push) {
+          const auto [push, pop] = model.last_stay();
+          levels.interval(push, pop);
+        }
       }
       model.end_triangle(st.cycles);
     }
