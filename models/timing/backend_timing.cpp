@@ -30,9 +30,7 @@ uint64_t BackendTimingModel::next_en(uint64_t tick) const {
 
 // Push and pop ticks both rise, so each count is a binary search.
 uint64_t BackendTimingModel::fifo_count_at(uint64_t tick) const {
-  const auto pushed = std::lower_bound(pushes_.begin(), pushes_.end(), tick) - pushes_.begin();
-  const auto popped = std::lower_bound(pops_.begin(), pops_.end(), tick) - pops_.begin();
-  return static_cast<uint64_t>(pushed - popped);
+  return pushes_.count_below(tick) - pops_.count_below(tick);
 }
 
 // The DDA holds a pixel while the FIFO is full at its tick `at`: it tries
@@ -47,8 +45,7 @@ uint64_t BackendTimingModel::wait_for_room(uint64_t at) {
     return at;
   }
   for (uint64_t count = fifo_count_at(at); count >= uint64_t(limit_); count = fifo_count_at(at)) {
-    const auto popped = std::lower_bound(pops_.begin(), pops_.end(), at) - pops_.begin();
-    const uint64_t frees_after = pops_[static_cast<size_t>(popped) + (count - limit_)];  // that pop makes room
+    const uint64_t frees_after = pops_[pops_.count_below(at) + (count - limit_)];  // that pop makes room
     const uint64_t clocks = (frees_after + 1 - at + period_ - 1) / period_;
     at += clocks * period_;
     t_.dda_wait_clocks += clocks;

@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -26,6 +25,7 @@
 #include "config/rtl_layout.hpp"
 #include "had/had.hpp"
 #include "timing/memory_side_ticks.hpp"
+#include "timing/tick_window.hpp"
 
 namespace girtd {
 
@@ -101,8 +101,8 @@ class BackendTimingModel {
   std::vector<int64_t> slot_page_;  // the page in each cache slot, -1: none
   std::vector<bool> slot_dirty_;    // a pixel was written to it since it came in (had.dirty_bits)
   uint64_t vram_free_ = 0;          // the first tick the VRAM takes a request after a write-behind write
-  std::deque<uint64_t> pops_;  // pop ticks of pixels possibly still in the FIFO
-  std::deque<uint64_t> pushes_;
+  TickWindow pops_;  // pop ticks of pixels possibly still in the FIFO
+  TickWindow pushes_;
   uint64_t tri_clock0_ = 0, tri_wait_ticks_ = 0;  // the triangle being streamed
   std::optional<uint64_t> tri_last_push_;
   BackendTiming t_;

@@ -11,9 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <deque>
 
 #include "pipeline/time_series.hpp"
+#include "timing/tick_window.hpp"
 
 namespace girtd {
 
@@ -72,7 +72,7 @@ class FifoLevels {
   uint64_t count_ = 0;
   uint64_t span_from_ = 0, span_peak_ = 0;  // the open span: its first tick, its largest count
   uint64_t span_bin_end_ = 0;               // and the first tick past the bin it started in
-  std::deque<uint64_t> pops_;  // of pixels pushed, not yet retired
+  TickWindow pops_;  // of pixels pushed, not yet retired
   FifoSeries series_{true};
 };
 
