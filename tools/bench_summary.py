@@ -126,10 +126,13 @@ def speed(_):
         out.append(f"| `{pathlib.Path(r['input']).name}` | {r['dda_cycles']:,.0f} | {r['rtl_wall_s']:.3f} | "
                    f"{r['rtl_dda_clocks_per_s']:.2e} | {r['dda_alone_clocks_per_s']:.2e} | "
                    f"{r['rtl_dda_clocks_per_s'] / r['dda_alone_clocks_per_s']:.2f} |")
-    out += ["", "| input | back end | wall s with the series | without | cost |", "|---|---|---|---|---|"]
+    out += ["", "What report.html's series cost: the median over pairs of renders (with, without) of their ratio.", "",
+            "| input | back end | pairs | wall s with the series | without | cost | process s with | without | cost |",
+            "|---|---|---|---|---|---|---|---|---|"]
     for r in s["series_cost"]:
-        out.append(f"| `{pathlib.Path(r['input']).name}` | {r['backend']} | {r['wall_s_with']:.3f} | "
-                   f"{r['wall_s_without']:.3f} | {100 * r['wall_cost']:+.1f} % |")
+        out.append(f"| `{pathlib.Path(r['input']).name}` | {r['backend']} | {r.get('pairs', 5)} | "
+                   f"{r['wall_s_with']:.3f} | {r['wall_s_without']:.3f} | {100 * r['wall_cost']:+.1f} % | "
+                   f"{r['process_s_with']:.3f} | {r['process_s_without']:.3f} | {100 * r['process_cost']:+.1f} % |")
     return "\n".join(out) + "\n"
 
 

@@ -24,6 +24,11 @@ void BackendTimingModel::on_fifo_stay(std::function<void(uint64_t push, uint64_t
   if (stepped_) stepped_->on_pop(std::move(f));
 }
 
+void BackendTimingModel::on_page_miss(std::function<void(uint32_t page)> f) {
+  if (stepped_) stepped_->on_page_miss(std::move(f));
+  else on_miss_ = std::move(f);
+}
+
 uint64_t BackendTimingModel::next_en(uint64_t tick) const {
   return (tick + period_ - 1) / period_ * period_;
 }
@@ -72,6 +77,7 @@ void BackendTimingModel::push(const TimedPixel& p, uint64_t tick) {
     done = pop + std::max(access_, 2);
   } else {  // the slot's page (if any and, with dirty bits, if written) goes back, the new one comes in
     ++t_.page_misses;
+    if (on_miss_) on_miss_(page);
     // A miss waits in IDLE for the write-behind write in flight.
     const uint64_t ready = std::max(pop, vram_free_);
     t_.had_vram_wait_ticks += ready - pop;
@@ -116,7 +122,10 @@ void BackendTimingModel::pixel(const TimedPixel& p) {
   const uint64_t at = wait_for_room(due);
   tri_wait_ticks_ += at - due;
   push(p, at);
-  if (!stepped_) t_.fifo_max = std::max<int>(t_.fifo_max, int(fifo_count_at(at + 1)));
+  if (!stepped_) {
+    count_after_push_ = fifo_count_at(at + 1);
+    t_.fifo_max = std::max<int>(t_.fifo_max, int(count_after_push_));
+  }
   tri_last_push_ = at;
 }
 

@@ -46,6 +46,12 @@ struct BackendTiming {
   int fifo_max = 0;
 };
 
+// A pixel's stay in the DDA -> HAD FIFO: in it on ticks push + 1 .. pop,
+// holding `count_after` pixels (itself included) from push + 1 on.
+struct FifoStay {
+  uint64_t push, pop, count_after;
+};
+
 class BackendTimingModel {
  public:
   explicit BackendTimingModel(const Params& p);
@@ -69,8 +75,10 @@ class BackendTimingModel {
   // last_stay() after pixel(); with the stepped memory side only once it
   // leaves: told to `f` then.
   bool stays_known_at_push() const { return !stepped_; }
-  std::pair<uint64_t, uint64_t> last_stay() const { return {pushes_.back(), pops_.back()}; }
+  FifoStay last_stay() const { return {pushes_.back(), pops_.back(), count_after_push_}; }
   void on_fifo_stay(std::function<void(uint64_t push, uint64_t pop)> f);
+  // Each page miss's page (report.html's heat map), as the HAD takes it.
+  void on_page_miss(std::function<void(uint32_t page)> f);
   // The tick the DDA can take its next parameter set (its first enabled
   // tick once the previous triangle is done), and a parameter set that
   // arrives later than that: the DDA idles until `tick`.
@@ -103,9 +111,11 @@ class BackendTimingModel {
   uint64_t vram_free_ = 0;          // the first tick the VRAM takes a request after a write-behind write
   TickWindow pops_;  // pop ticks of pixels possibly still in the FIFO
   TickWindow pushes_;
+  uint64_t count_after_push_ = 0;  // the FIFO's count just after the last push
   uint64_t tri_clock0_ = 0, tri_wait_ticks_ = 0;  // the triangle being streamed
   std::optional<uint64_t> tri_last_push_;
   BackendTiming t_;
+  std::function<void(uint32_t)> on_miss_;
   std::unique_ptr<MemorySideTicks> stepped_;  // with prefetch or stolen cycles: the memory side, tick by tick
 };
 

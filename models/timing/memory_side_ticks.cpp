@@ -182,6 +182,7 @@ void MemorySideTicks::step() {
         count_ = access_ <= 2 ? 1 : access_ - 1;
       } else if (miss_go) {
         ++page_misses_;
+        if (on_miss_) on_miss_(pix_.page);
         use_pf_ = pf_valid_ && pf_page_ == pix_.page;
         pf_valid_ = false;
         if (must_write_back && !write_behind_) {

@@ -45,6 +45,7 @@ class MemorySideTicks {
   uint64_t fifo_max() const { return fifo_max_; }
   // Called as each pixel leaves the FIFO: the ticks it was pushed and popped on.
   void on_pop(std::function<void(uint64_t push, uint64_t pop)> f) { on_pop_ = std::move(f); }
+  void on_page_miss(std::function<void(uint32_t page)> f) { on_miss_ = std::move(f); }
 
  private:
   enum class State { kIdle, kWriteBack, kFetch, kAccess, kBlend, kFlush, kRefetch };
@@ -81,6 +82,7 @@ class MemorySideTicks {
   // counters, as the RTL's
   uint64_t page_misses_ = 0, busy_ticks_ = 0, vram_wait_ticks_ = 0, fifo_max_ = 0;
   std::function<void(uint64_t, uint64_t)> on_pop_;
+  std::function<void(uint32_t)> on_miss_;
 };
 
 }  // namespace girtd

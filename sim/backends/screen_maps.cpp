@@ -22,7 +22,7 @@ void ScreenMapRecorder::begin_frame() {
 void ScreenMapRecorder::page_change(uint32_t page) {
   int64_t& in_slot = slot_page_[size_t(layout_.cache.slot_of(page))];
   if (in_slot != int64_t(page)) {
-    ++m_.page_misses[page];
+    page_missed(page);
     in_slot = page;
   }
   last_page_ = page;

@@ -31,10 +31,16 @@ class ScreenMapRecorder {
  public:
   explicit ScreenMapRecorder(const Params& p);
   void begin_frame();  // the cache starts empty
-  // On every pixel of approx (inline: its cost is measured by `girtd bench --speed`).
+  // On every pixel the RTL's DDA pushes: the page misses follow from the
+  // cache's geometry here (inline: its cost is measured by `girtd bench --speed`).
   void pixel(int x, int y) {
     const uint32_t page = layout_.page.number_of(x, y);
     if (int64_t(page) != last_page_) page_change(page);  // the page just touched is still in its slot
+    drawn(x, y);
+  }
+  // Where a timing model tells the misses itself (approx): each pixel drawn,
+  // and each miss's page.
+  void drawn(int x, int y) {
     // The DDA walks rows: most pixels extend the run of the row before them.
     if (y == run_.y && (x == run_.hi + 1 || x == run_.lo - 1)) {
       run_.lo = std::min(run_.lo, x);
@@ -44,6 +50,7 @@ class ScreenMapRecorder {
     if (run_.y >= 0) drawn_.push_back(run_);
     run_ = {y, x, x};
   }
+  void page_missed(uint32_t page) { ++m_.page_misses[page]; }
   void end_triangle(uint64_t dda_cycles, uint64_t emitted);
   const ScreenMaps& maps() const { return m_; }
 

@@ -65,6 +65,26 @@ std::string png_rgb_bytes(const RgbImage& img, bool fast) {
   return out;
 }
 
+std::string png_indexed_bytes(int width, int height, const std::vector<uint8_t>& indices,
+                              const std::array<uint8_t, 3 * 256>& palette) {
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = png_uint_32(width);
+  image.height = png_uint_32(height);
+  image.format = PNG_FORMAT_RGB_COLORMAP;
+  image.colormap_entries = 256;
+  image.flags |= PNG_IMAGE_FLAG_FAST;
+  png_alloc_size_t size = 0;  // first the size, then the bytes
+  if (!png_image_write_to_memory(&image, nullptr, &size, 0, indices.data(), 0, palette.data()))
+    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
+  std::string out(size, '\0');
+  if (!png_image_write_to_memory(&image, out.data(), &size, 0, indices.data(), 0, palette.data()))
+    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
+  out.resize(size);
+  return out;
+}
+
 void write_png_gray16(const std::string& path, int width, int height, const std::vector<uint16_t>& values) {
   png_image image;
   std::memset(&image, 0, sizeof image);

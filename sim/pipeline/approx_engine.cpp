@@ -19,7 +19,10 @@ class ApproxEngine : public BackendEngine {
       : period_ticks_(static_cast<uint64_t>(p.ticks(p.dda_clock_ns))), dda_(p), fb_(p.screen_width, p.screen_height, static_cast<uint16_t>(p.depth_clear)), had_(fb_, p.one_minus_nf),
         timing_(p), maps_(p), fifo_levels_(p.base_tick_ns * 1e-9) {
     if (sample_rate) sampler_.emplace(*sample_rate);
-    if (series_) timing_.on_fifo_stay([this](uint64_t push, uint64_t pop) { fifo_levels_.interval(push, pop); });
+    if (series_) {
+      timing_.on_fifo_stay([this](uint64_t push, uint64_t pop) { fifo_levels_.interval(push, pop); });
+      timing_.on_page_miss([this](uint32_t page) { maps_.page_missed(page); });
+    }
     stays_at_push_ = series_ && timing_.stays_known_at_push();
   }
   void prune(const PrunePlan& plan) override { dda_.skip_unreachable_wraps(plan.unreachable_wraps); }
@@ -54,10 +57,10 @@ class ApproxEngine : public BackendEngine {
     const DdaRunStats st = dda_.run(d, [&](const DdaEmit& e) {
       timing_.pixel({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel, d.layer, e.covered)});
       if (stays_at_push_) {
-        const auto [push, pop] = timing_.last_stay();
-        fifo_levels_.interval(push, pop);
+        const FifoStay s = timing_.last_stay();
+        fifo_levels_.pushed(s.push, s.pop, s.count_after);
       }
-      if (series_) maps_.pixel(e.pixel.x, e.pixel.y);
+      if (series_) maps_.drawn(e.pixel.x, e.pixel.y);
     });
     timing_.end_triangle(st.cycles);
     if (series_) maps_.end_triangle(st.cycles, st.emitted);

@@ -12,8 +12,6 @@
 #include "backends/backend.hpp"
 #include "rtl/backend_rtl.hpp"
 #include "pipeline/pipeline_elaboration.hpp"
-#include "backends/series_switch.hpp"
-#include "pipeline/screen_mapped_engine.hpp"
 
 namespace girtd {
 
@@ -24,10 +22,7 @@ std::unique_ptr<BackendEngine> make_approx_engine(const Params& p, std::optional
 std::unique_ptr<BackendEngine> make_backend_engine(const std::string& backend, const Params& p, bool traced,
                                                    std::optional<double> sample_rate) {
   if (backend == "approx") return make_approx_engine(p, sample_rate);
-  if (backend == "rtl") {
-    std::unique_ptr<BackendEngine> rtl = make_backend_rtl(p, 0, traced);
-    return record_series() ? with_screen_maps(std::move(rtl), p) : std::move(rtl);
-  }
+  if (backend == "rtl") return make_backend_rtl(p, 0, traced);
   throw std::logic_error("not a pipeline back end: " + backend);
 }
 

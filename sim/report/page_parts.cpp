@@ -84,7 +84,14 @@ std::string page_tail(const std::string& data_json, const char* script) {
   // JSON has '<' only inside strings, where \u003c reads the same: nothing
   // in the data can then open or close an element.
   std::string safe;
-  for (char c : data_json) safe += c == '<' ? std::string("\\u003c") : std::string(1, c);
+  safe.reserve(data_json.size());
+  for (size_t from = 0;;) {
+    const size_t lt = data_json.find('<', from);
+    safe.append(data_json, from, lt == std::string::npos ? std::string::npos : lt - from);
+    if (lt == std::string::npos) break;
+    safe += "\\u003c";
+    from = lt + 1;
+  }
   return "<script id=\"girtd-data\" type=\"application/json\">" + safe + "</script>\n<script>" +
          kPrologue + script + kEpilogue + "</script>\n</body></html>\n";
 }

@@ -1,6 +1,7 @@
 #include "report/report_page.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -127,14 +128,11 @@ build();
 
 // The DDA waste map's pixels: dark grey where nothing was drawn, else a
 // blue -> yellow -> red ramp over 0 -> 50 -> 100 % of the clocks wasted.
+// The map's levels (0..254, and kNone) index a palette of those colours.
 std::string waste_map_png(const ScreenMaps& m) {
-  RgbImage img;
-  img.width = m.width;
-  img.height = m.height;
-  img.rgb.resize(size_t(m.width) * size_t(m.height) * 3);
-  for (size_t i = 0; i < m.dda_waste.size(); ++i) {
-    uint8_t* px = &img.rgb[3 * i];
-    const uint8_t w = m.dda_waste[i];
+  std::array<uint8_t, 3 * 256> palette{};
+  for (int w = 0; w < 256; ++w) {
+    uint8_t* px = &palette[size_t(3 * w)];
     if (w == ScreenMaps::kNone) {
       px[0] = px[1] = px[2] = 40;
       continue;
@@ -145,7 +143,7 @@ std::string waste_map_png(const ScreenMaps& m) {
     px[1] = uint8_t(255 * (lo - hi));
     px[2] = uint8_t(255 * (1 - lo));
   }
-  return png_rgb_bytes(img, true);
+  return png_indexed_bytes(m.width, m.height, m.dda_waste, palette);
 }
 
 // The heat maps' part of the page: the page-miss map is drawn from the data
@@ -217,10 +215,9 @@ nlohmann::json report_page_data(const nlohmann::json& report, const RunStats& s)
   return data;
 }
 
-std::string report_html(const nlohmann::json& page_data_in, const RgbImage& frame, const std::string& frame_png,
+std::string report_html(nlohmann::json page_data, const RgbImage& frame, const std::string& frame_png,
                         const RunStats& s, const std::optional<FrameComparison>& compare,
                         const std::optional<ChartLibrary>& charts) {
-  nlohmann::json page_data = page_data_in;
   const std::string compared = compare ? compare_html(frame, *compare, page_data) : "";
   const nlohmann::json& r = page_data.at("report");
   std::ostringstream o;

@@ -35,7 +35,7 @@ struct FrameComparison {
 // `frame_png`: the frame as frame.png holds it (encoded once). `s.maps`'
 // DDA waste map and the comparison's heat map are inlined as pictures
 // (their pixels coloured here).
-std::string report_html(const nlohmann::json& page_data, const RgbImage& frame, const std::string& frame_png,
+std::string report_html(nlohmann::json page_data, const RgbImage& frame, const std::string& frame_png,
                         const RunStats& s, const std::optional<FrameComparison>& compare,
                         const std::optional<ChartLibrary>& charts);
 

@@ -8,11 +8,13 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
 
+#include "backends/screen_maps.hpp"
 #include "backends/series_switch.hpp"
 #include "common/input_error.hpp"
 #include "rtl/backend_rtl.hpp"
@@ -35,6 +37,7 @@ class BackendRtlCore final : public BackendRtl {
  public:
   BackendRtlCore(const Params& p, uint32_t x_seed)
       : params_(p), layout_(rtl_layout(p)), fifo_levels_(p.base_tick_ns * 1e-9) {
+    if (series_) maps_.emplace(p);
     if (x_seed != 0) {
       ctx_.randReset(2);
       ctx_.randSeed(static_cast<int>(x_seed));
@@ -83,6 +86,7 @@ class BackendRtlCore final : public BackendRtl {
     tick(kOneTick);
     t.clear_i = 0;
     drain();
+    if (maps_) maps_->begin_frame();
   }
 
   void draw(const DdaParams& d) override {
@@ -95,6 +99,7 @@ class BackendRtlCore final : public BackendRtl {
       t.clk_i = 0;
       t.eval();
       const bool taken = t.in_ready_o;  // ready only on a DDA clock: the load happens at this edge
+      if (taken && maps_) begin_mapped_triangle();
       // The RTL's quiet_o cannot see the offer: an enabled tick is never warped over here.
       tick(ticks_ % period_ == 0 ? kOneTick : UINT64_MAX);
       if (taken) break;
@@ -106,6 +111,7 @@ class BackendRtlCore final : public BackendRtl {
   void end_frame() override {
     Model& t = *top_;
     drain();
+    if (maps_) end_mapped_triangle();
     t.flush_i = 1;
     tick(kOneTick);
     t.flush_i = 0;
@@ -155,6 +161,10 @@ class BackendRtlCore final : public BackendRtl {
   BackendCounters counters() const override {
     const Model& t = *top_;
     return {t.dda_clocks_o, t.dda_wait_ticks_o, t.had_busy_ticks_o};
+  }
+  std::optional<ScreenMaps> screen_maps() const override {
+    if (!maps_) return std::nullopt;
+    return maps_->maps();
   }
   std::optional<FifoSeries> fifo_levels(uint64_t end) const override {
     if (!series_) return std::nullopt;
@@ -245,6 +255,7 @@ class BackendRtlCore final : public BackendRtl {
       probe = {ticks_ + 1, false, bool(t.pixel_push_o), int(t.pixel_x_o), int(t.pixel_y_o)};
       on_tick_(probe);
     }
+    if (maps_ && t.pixel_push_o) maps_->pixel(int(t.pixel_x_o), int(t.pixel_y_o));
     uint64_t span = on_tick_ ? 1 : std::max<uint64_t>(1, std::min<uint64_t>(t.quiet_o, most));
     if (span > period_) span -= span % period_;  // from an enabled tick, whole DDA periods (quiet_o's)
     t.ticks_i = static_cast<uint32_t>(span);
@@ -256,6 +267,19 @@ class BackendRtlCore final : public BackendRtl {
       probe.rising = true;
       on_tick_(probe);
     }
+  }
+  // report.html's heat maps from the RTL itself: the pixels the DDA pushes,
+  // in order, and each triangle's DDA clocks and pixels from the counters
+  // (the DDA is ready again only once the triangle before is done).
+  void begin_mapped_triangle() {
+    end_mapped_triangle();
+    mapped_from_ = {top_->dda_clocks_o, top_->pixels_generated_o};
+    mapping_ = true;
+  }
+  void end_mapped_triangle() {
+    if (!mapping_) return;
+    maps_->end_triangle(top_->dda_clocks_o - mapped_from_[0], top_->pixels_generated_o - mapped_from_[1]);
+    mapping_ = false;
   }
   const auto& vram() const { return top_->rootp->girtd_backend__DOT__u_vram__DOT__mem; }
   static uint64_t bits(uint64_t word, const BitField& f) { return (word >> f.lsb) & uint64_t(max_of_bits(f.width)); }
@@ -271,6 +295,9 @@ class BackendRtlCore final : public BackendRtl {
   std::vector<int> source_lines_;  // of each parameter set drawn (the first affected one's line)
   FifoLevels fifo_levels_;
   bool series_ = record_series();
+  std::optional<ScreenMapRecorder> maps_;   // with the series on
+  std::array<uint64_t, 2> mapped_from_{};   // DDA clocks and pixels when the mapped triangle was loaded
+  bool mapping_ = false;
   std::function<void(const BackendRtl::TickProbe&)> on_tick_;
 };
 

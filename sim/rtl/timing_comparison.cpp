@@ -27,6 +27,8 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
   FifoLevels levels(p.base_tick_ns * 1e-9);
   model.on_fifo_stay([&](uint64_t push, uint64_t pop) { levels.interval(push, pop); });  // stepped
   const bool at_push = model.stays_known_at_push();
+  ScreenMapRecorder maps(p);  // fed as the approx back end feeds it
+  model.on_page_miss([&](uint32_t page) { maps.page_missed(page); });
   DdaEngine dda(p);
   FrameBuffer fb(p.screen_width, p.screen_height, uint16_t(p.depth_clear));
   Had had(fb, p.one_minus_nf);
@@ -34,17 +36,20 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
   for (size_t i = 0; i < frames.size(); ++i) {
     fb.clear_back(trace.frames[i].settings.background);
     model.begin_frame();
+    maps.begin_frame();
     for (const DdaParams& d : frames[i]) {
       pixels.clear();
       const DdaRunStats st = dda.run(d, [&](const DdaEmit& e) {
         pixels.push_back({e.cycle, e.pixel.x, e.pixel.y, had.update(e.pixel)});
+        maps.drawn(e.pixel.x, e.pixel.y);
       });
+      maps.end_triangle(st.cycles, st.emitted);
       model.begin_triangle();
       for (const TimedPixel& px : pixels) {
         model.pixel(px);
         if (at_push) {
-          const auto [push, pop] = model.last_stay();
-          levels.interval(push, pop);
+          const FifoStay s = model.last_stay();
+          levels.pushed(s.push, s.pop, s.count_after);
         }
       }
       model.end_triangle(st.cycles);
@@ -54,6 +59,7 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
   }
   c.model = model.timing();
   c.model_fifo = levels.series(c.model.ticks);
+  c.model_maps = maps.maps();
   // Made (and reset) outside the timed part, as the pipeline's is.
   const std::unique_ptr<BackendRtl> made = make_backend_rtl(p);
   BackendRtl& rtl = *made;
@@ -66,6 +72,7 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
   c.rtl = rtl.result();
   // None recorded under GIRTD_NO_SERIES: then the RTL's series stays empty.
   if (const auto levels = rtl.fifo_levels(c.rtl.ticks)) c.rtl_fifo = *levels;
+  c.rtl_maps = rtl.screen_maps();
   const auto t2 = clock::now();
   c.model_wall_s = std::chrono::duration<double>(t1 - t0).count();
   c.rtl_wall_s = std::chrono::duration<double>(t2 - t1).count();

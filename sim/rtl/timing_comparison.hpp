@@ -3,10 +3,12 @@
 // HAD — with their results and wall times side by side.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "config/params.hpp"
 #include "backends/fifo_levels.hpp"
+#include "backends/screen_maps.hpp"
 #include "rtl/backend_rtl.hpp"
 #include "timing/backend_timing.hpp"
 
@@ -16,6 +18,8 @@ struct TimingComparison {
   BackendTiming model;
   BackendResult rtl;
   FifoSeries model_fifo, rtl_fifo;  // the DDA -> HAD FIFO's largest count per bin
+  ScreenMaps model_maps;             // report.html's heat maps: from the golden DDA's pixels,
+  std::optional<ScreenMaps> rtl_maps;  // and from the RTL's own pushes and counters
   double model_wall_s = 0;  // golden DDA + HAD + event model
   double rtl_wall_s = 0;    // the Verilated back end alone
 };

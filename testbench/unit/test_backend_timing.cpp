@@ -1,6 +1,6 @@
 // The back end's event timing model (models/timing) against the RTL back end
 // (hw/backend) on the sample traces: the same page misses, DDA waits and
-// tick count, and the same FIFO occupancy over time.
+// tick count, the same FIFO occupancy over time and the same heat maps.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -15,6 +15,15 @@ double max_of(const FifoSeries& s) {
   double m = 0;
   for (const auto& bin : s.bins()) m = std::max(m, bin[0]);
   return m;
+}
+
+// Entries that differ (a count: Catch2 would print whole screens).
+template <typename T>
+size_t differing(const std::vector<T>& a, const std::vector<T>& b) {
+  if (a.size() != b.size()) return std::max(a.size(), b.size());
+  size_t n = 0;
+  for (size_t i = 0; i < a.size(); ++i) n += a[i] != b[i];
+  return n;
 }
 
 void check_trace(const std::string& path, const Params& p = Params::defaults()) {
@@ -32,6 +41,14 @@ void check_trace(const std::string& path, const Params& p = Params::defaults()) 
   CHECK(c.model_fifo.bin_s() == c.rtl_fifo.bin_s());
   CHECK(c.model_fifo.bins() == c.rtl_fifo.bins());
   CHECK(double(c.rtl.fifo_max) == max_of(c.rtl_fifo));
+  // report.html's heat maps: the RTL's pushes and counters draw the golden DDA's maps,
+  // and the misses per page add up to the RTL's own page-miss counter.
+  REQUIRE(c.rtl_maps);
+  CHECK(differing(c.rtl_maps->page_misses, c.model_maps.page_misses) == 0);
+  CHECK(differing(c.rtl_maps->dda_waste, c.model_maps.dda_waste) == 0);
+  uint64_t misses = 0;
+  for (uint32_t m : c.rtl_maps->page_misses) misses += m;
+  CHECK(misses == c.rtl.page_misses);
 }
 
 // The memory-side options, alone and together (run-time inputs of the

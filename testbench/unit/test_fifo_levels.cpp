@@ -1,6 +1,10 @@
 // report.html's FIFO occupancy series from pixel stays, worked by hand.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <random>
+#include <vector>
+
 #include "backends/fifo_levels.hpp"
 
 namespace girtd {
@@ -46,6 +50,32 @@ TEST_CASE("FIFO levels: a peak early in a bin does not spill into the bins after
   for (size_t b = 0; b < 10; ++b) peaks.push_back(s.bins()[b][0]);
   CHECK(peaks == std::vector<double>{3, 7, 11, 15, 16, 12, 8, 4, 0, 0});
   CHECK(s.bins()[99][0] == 0);
+}
+
+TEST_CASE("FIFO levels: stays given with their counts give the series of stays alone", "[report]") {
+  // A FIFO of 16 over 200,000 pixels: random pushes (one per DDA clock of 7
+  // ticks at most) and pops (FIFO order, never before the push, never more
+  // than 16 inside); the count just after each push counted here by hand.
+  std::mt19937_64 rng(11);
+  FifoLevels stays(5e-9), counted(5e-9);
+  std::vector<uint64_t> pops;  // of the pixels pushed so far
+  uint64_t push = 0, last_pop = 0;
+  for (int i = 0; i < 200000; ++i) {
+    push += 7 * (1 + rng() % (rng() % 50 == 0 ? 400 : 3));  // now and then a long gap
+    if (pops.size() >= 16) push = std::max(push, pops[pops.size() - 16]);  // full: wait for a pop
+    const uint64_t pop = std::max(push + 1, last_pop + 1 + rng() % 2) + rng() % 30;
+    last_pop = pop;
+    pops.push_back(pop);
+    // In on push + 1: pushed before push + 1 (all of them), not popped before it.
+    const uint64_t inside = uint64_t(std::count_if(pops.end() - std::min<ptrdiff_t>(pops.size(), 40), pops.end(),
+                                                   [&](uint64_t q) { return q >= push + 1; }));
+    stays.interval(push, pop);
+    counted.pushed(push, pop, inside);
+  }
+  const uint64_t end = last_pop + 1000;
+  const FifoSeries a = stays.series(end), b = counted.series(end);
+  REQUIRE(a.bin_s() == b.bin_s());
+  CHECK(a.bins() == b.bins());
 }
 
 }  // namespace girtd
