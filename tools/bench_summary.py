@@ -110,6 +110,13 @@ def pruning(b):
            f"traces (the wrap detector only)"
            + (f"; `out_of_view.json` {oov['speedup']:.2f}x ({oov['no_prune_wall_s']:.3f} s against "
               f"{oov['pruned_wall_s']:.3f} s)." if oov else ".")]
+    c = b.get("pruning_ceiling")
+    if c:
+        out.append(f"- The most any pruning could save there: the same scene with its out-of-view objects not "
+                   f"simulated at all (`culling.objects`, used only as that bound) runs in "
+                   f"{c['objects_culled_wall_s']:.3f} s against `--no-prune`'s {c['no_prune_wall_s']:.3f} s, "
+                   f"{c['ceiling']:.2f}x (median over {c['pairs']} pairs). Pruning must still charge the culled "
+                   f"polygons' lighting flops, so it cannot beat that.")
     return "\n".join(out) + "\n"
 
 

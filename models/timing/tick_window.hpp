@@ -15,9 +15,11 @@ namespace girtd {
 class TickWindow {
  public:
   void push_back(uint64_t tick) { ticks_.push_back(tick); }
-  void pop_front() {
+  void pop_front() { drop_front(1); }
+  void drop_front(size_t n) {
+    head_ += n;
     // Retired entries are dropped in bulk: amortized O(1), the block stays small.
-    if (++head_ >= kCompactAfter && head_ * 2 >= ticks_.size()) {
+    if (head_ >= kCompactAfter && head_ * 2 >= ticks_.size()) {
       ticks_.erase(ticks_.begin(), ticks_.begin() + std::ptrdiff_t(head_));
       cursor_ -= std::min(cursor_, head_);
       head_ = 0;

@@ -80,9 +80,7 @@ class FifoLevels {
     series_.note_max(0, from, (double(tick) - 0.5) * tick_s_, double(count_));
   }
   // Pops up to the last push are in count_ already (pushed()).
-  void settle_pops() {
-    while (!pops_.empty() && pops_.front() <= last_push_) pops_.pop_front();
-  }
+  void settle_pops() { pops_.drop_front(pops_.count_below(last_push_ + 1)); }
   void retire_pops_up_to(uint64_t tick) {
     while (!pops_.empty() && pops_.front() <= tick) {
       level(pops_.front() + 1, count_ - 1);

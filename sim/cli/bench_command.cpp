@@ -81,7 +81,8 @@ int run_bench(const BenchArgs& a) {
     const LeaveOutBench lb = run_leave_out_bench(config, out_dir);
     OutputSet files(out_dir);
     files.add_text("leave_out.json", nlohmann::json{{"measured_on", measured_on()}, {"culling", lb.culling},
-                                                    {"pruning", lb.pruning}, {"config", params.source}}
+                                                    {"pruning", lb.pruning}, {"pruning_ceiling", lb.pruning_ceiling},
+                                                    {"config", params.source}}
                                              .dump(2) + "\n");
     files.add_text("leave_out.md", "# girtd bench --leave-out\n" + lb.markdown);
     files.commit();
@@ -161,6 +162,7 @@ int run_bench(const BenchArgs& a) {
                                               {"series_cost", sb.rows},
                                               {"culling", lb.culling},
                                               {"pruning", lb.pruning},
+                                              {"pruning_ceiling", lb.pruning_ceiling},
                                               {"config", params.source}}
                                        .dump(2) +
                                    "\n");

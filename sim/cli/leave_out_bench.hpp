@@ -20,6 +20,7 @@ struct LeaveOutBench {
   std::string markdown;
   nlohmann::json culling = nlohmann::json::array();
   nlohmann::json pruning = nlohmann::json::array();
+  nlohmann::json pruning_ceiling;  // the most pruning could save on the mostly-out-of-view scene
   int failures = 0;  // a render that failed, or pruning that changed an output
 };
 

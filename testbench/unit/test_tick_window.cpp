@@ -35,9 +35,13 @@ TEST_CASE("Tick window: the same counts as a plain queue over a long run", "[tim
       tick += rng() % 3;  // rising, with repeats
       w.push_back(tick);
       plain.push_back(tick);
-    } else if (r < 7 && !plain.empty()) {
+    } else if (r < 6 && !plain.empty()) {
       w.pop_front();
       plain.pop_front();
+    } else if (r < 7) {  // several at once
+      const size_t n = std::min<size_t>(plain.size(), rng() % 5);
+      w.drop_front(n);
+      plain.erase(plain.begin(), plain.begin() + std::ptrdiff_t(n));
     } else {
       // Mostly rising questions, now and then one far back.
       asked = (rng() % 16 == 0) ? rng() % (tick + 1) : asked + rng() % 4;
