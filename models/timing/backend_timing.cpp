@@ -33,7 +33,7 @@ uint64_t BackendTimingModel::next_en(uint64_t tick) const {
   return (tick + period_ - 1) / period_ * period_;
 }
 
-// Push and pop ticks both rise, so each count is a binary search.
+// Push and pop ticks both rise: each count picks up where the last one ended (TickWindow).
 uint64_t BackendTimingModel::fifo_count_at(uint64_t tick) const {
   return pushes_.count_below(tick) - pops_.count_below(tick);
 }

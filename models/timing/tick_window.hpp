@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -17,6 +18,7 @@ class TickWindow {
   void push_back(uint64_t tick) { ticks_.push_back(tick); }
   void pop_front() { drop_front(1); }
   void drop_front(size_t n) {
+    assert(n <= size());
     head_ += n;
     // Retired entries are dropped in bulk: amortized O(1), the block stays small.
     if (head_ >= kCompactAfter && head_ * 2 >= ticks_.size()) {

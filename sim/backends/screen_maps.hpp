@@ -1,11 +1,14 @@
 // Where on the screen a back end spent its effort, for report.html's heat
 // maps: the cache's page misses per page, and the share of DDA clocks each
 // triangle wasted (states that emitted no pixel) over the pixels it drew.
-// Fed with the pixels in the order the DDA emits them: page misses follow
-// from that order and the cache's geometry alone (direct-mapped, page P in
-// slot P mod pages; empty at each frame's start, as the RTL's flush leaves it), not from timing, so the
-// map is the same for golden's order, approx's and rtl's (one DDA,
-// regressed bit for bit).
+// Fed with the pixels in the order the DDA emits them (pixel()): page misses
+// follow from that order and the cache's geometry alone (direct-mapped, page
+// P in slot P mod pages; empty at each frame's start, as the RTL's flush
+// leaves it), not from timing, so the map is the same for golden's order,
+// approx's and rtl's (one DDA, regressed bit for bit). rtl feeds the pixels
+// its DDA pushes (rtl/rtl_screen_maps.hpp); approx feeds drawn() and takes
+// the misses from its event model (page_missed()). The [timing] tests check
+// that the two give the same maps.
 #pragma once
 
 #include <algorithm>

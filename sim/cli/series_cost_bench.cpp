@@ -64,19 +64,25 @@ SeriesCostBench run_series_cost_bench(const ConfigFiles& config, const std::stri
       std::vector<double> wall_on, wall_off, proc_on, proc_off, wall_ratio, proc_ratio;
       Timed on, off;
       const int pairs = pairs_for(backend);
-      for (int i = 0; i < pairs; ++i) {  // each first every other time
-        if (i % 2) off = render_timed(input, backend, base + "-without", config, false);
-        on = render_timed(input, backend, base + "-with", config, true);
-        if (i % 2 == 0) off = render_timed(input, backend, base + "-without", config, false);
-        if (on.report.is_null() || off.report.is_null()) break;
-        wall_on.push_back(on.report.at("wall_s"));
-        wall_off.push_back(off.report.at("wall_s"));
-        proc_on.push_back(on.process_s);
-        proc_off.push_back(off.process_s);
-        wall_ratio.push_back(wall_on.back() / wall_off.back());
-        proc_ratio.push_back(proc_on.back() / proc_off.back());
-      }
-      if (on.report.is_null() || off.report.is_null()) {
+      const bool ran = run_pairs(
+          pairs,
+          [&] {
+            on = render_timed(input, backend, base + "-with", config, true);
+            return !on.report.is_null() && on.report.at("wall_s").get<double>() > 0;
+          },
+          [&] {
+            off = render_timed(input, backend, base + "-without", config, false);
+            return !off.report.is_null() && off.report.at("wall_s").get<double>() > 0;
+          },
+          [&] {
+            wall_on.push_back(on.report.at("wall_s"));
+            wall_off.push_back(off.report.at("wall_s"));
+            proc_on.push_back(on.process_s);
+            proc_off.push_back(off.process_s);
+            wall_ratio.push_back(wall_on.back() / wall_off.back());
+            proc_ratio.push_back(proc_on.back() / proc_off.back());
+          });
+      if (!ran) {
         ++b.failures;
         b.markdown += std::string("| ") + input + " | " + backend + " | render failed |\n";
         continue;

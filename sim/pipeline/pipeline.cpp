@@ -12,6 +12,7 @@
 #include "backends/backend.hpp"
 #include "rtl/backend_rtl.hpp"
 #include "pipeline/pipeline_elaboration.hpp"
+#include "backends/series_switch.hpp"
 
 namespace girtd {
 
@@ -22,7 +23,11 @@ std::unique_ptr<BackendEngine> make_approx_engine(const Params& p, std::optional
 std::unique_ptr<BackendEngine> make_backend_engine(const std::string& backend, const Params& p, bool traced,
                                                    std::optional<double> sample_rate) {
   if (backend == "approx") return make_approx_engine(p, sample_rate);
-  if (backend == "rtl") return make_backend_rtl(p, 0, traced);
+  if (backend == "rtl") {
+    std::unique_ptr<BackendRtl> rtl = make_backend_rtl(p, 0, traced);
+    if (record_series()) rtl->record_screen_maps();
+    return rtl;
+  }
   throw std::logic_error("not a pipeline back end: " + backend);
 }
 

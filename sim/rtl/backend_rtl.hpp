@@ -42,6 +42,9 @@ class BackendRtl : public BackendEngine {
     int pixel_x, pixel_y;
   };
   virtual void on_tick(std::function<void(const TickProbe&)> hook) = 0;
+  // Record report.html's heat maps (screen_maps()) from here on; the
+  // pipeline asks when it records series, regress and the benches do not.
+  virtual void record_screen_maps() = 0;
   // The traced build only: record every signal into an FST writer.
   virtual void trace(VerilatedFstC* tfp) = 0;
 };

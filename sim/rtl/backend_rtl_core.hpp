@@ -14,12 +14,12 @@
 #include <type_traits>
 #include <utility>
 
-#include "backends/screen_maps.hpp"
 #include "backends/series_switch.hpp"
 #include "common/input_error.hpp"
 #include "rtl/backend_rtl.hpp"
 #include "config/rtl_layout.hpp"
 #include "rtl/port_access.hpp"
+#include "rtl/rtl_screen_maps.hpp"
 #include "verilated.h"
 
 class VerilatedFstC;
@@ -37,7 +37,6 @@ class BackendRtlCore final : public BackendRtl {
  public:
   BackendRtlCore(const Params& p, uint32_t x_seed)
       : params_(p), layout_(rtl_layout(p)), fifo_levels_(p.base_tick_ns * 1e-9) {
-    if (series_) maps_.emplace(p);
     if (x_seed != 0) {
       ctx_.randReset(2);
       ctx_.randSeed(static_cast<int>(x_seed));
@@ -99,7 +98,7 @@ class BackendRtlCore final : public BackendRtl {
       t.clk_i = 0;
       t.eval();
       const bool taken = t.in_ready_o;  // ready only on a DDA clock: the load happens at this edge
-      if (taken && maps_) begin_mapped_triangle();
+      if (taken && maps_) maps_->loaded(t.dda_clocks_o, dda_pixels_in_flight());
       // The RTL's quiet_o cannot see the offer: an enabled tick is never warped over here.
       tick(ticks_ % period_ == 0 ? kOneTick : UINT64_MAX);
       if (taken) break;
@@ -111,7 +110,6 @@ class BackendRtlCore final : public BackendRtl {
   void end_frame() override {
     Model& t = *top_;
     drain();
-    if (maps_) end_mapped_triangle();
     t.flush_i = 1;
     tick(kOneTick);
     t.flush_i = 0;
@@ -124,6 +122,7 @@ class BackendRtlCore final : public BackendRtl {
 
   void drain() override {
     clock_until([](const Model& t) { return bool(t.idle_o); }, "the RTL back end did not go idle");
+    if (maps_) maps_->idle(top_->dda_clocks_o);
   }
 
   // Clocks until the DDA could take a parameter set on this tick.
@@ -221,6 +220,7 @@ class BackendRtlCore final : public BackendRtl {
   }
 
   void on_tick(std::function<void(const BackendRtl::TickProbe&)> hook) override { on_tick_ = std::move(hook); }
+  void record_screen_maps() override { maps_.emplace(params_); }
   void trace(VerilatedFstC* tfp) override {
     if constexpr (HasFstTrace<Model>::value) top_->trace(tfp, 99);
     else throw std::logic_error("this Verilated build of the back end has no tracing");
@@ -255,7 +255,7 @@ class BackendRtlCore final : public BackendRtl {
       probe = {ticks_ + 1, false, bool(t.pixel_push_o), int(t.pixel_x_o), int(t.pixel_y_o)};
       on_tick_(probe);
     }
-    if (maps_ && t.pixel_push_o) maps_->pixel(int(t.pixel_x_o), int(t.pixel_y_o));
+    if (maps_ && t.pixel_push_o) maps_->pushed(int(t.pixel_x_o), int(t.pixel_y_o));
     uint64_t span = on_tick_ ? 1 : std::max<uint64_t>(1, std::min<uint64_t>(t.quiet_o, most));
     if (span > period_) span -= span % period_;  // from an enabled tick, whole DDA periods (quiet_o's)
     t.ticks_i = static_cast<uint32_t>(span);
@@ -268,18 +268,12 @@ class BackendRtlCore final : public BackendRtl {
       on_tick_(probe);
     }
   }
-  // report.html's heat maps from the RTL itself: the pixels the DDA pushes,
-  // in order, and each triangle's DDA clocks and pixels from the counters
-  // (the DDA is ready again only once the triangle before is done).
-  void begin_mapped_triangle() {
-    end_mapped_triangle();
-    mapped_from_ = {top_->dda_clocks_o, top_->pixels_generated_o};
-    mapping_ = true;
-  }
-  void end_mapped_triangle() {
-    if (!mapping_) return;
-    maps_->end_triangle(top_->dda_clocks_o - mapped_from_[0], top_->pixels_generated_o - mapped_from_[1]);
-    mapping_ = false;
+  // Pixels in the DDA's output stages (through the backdoor, as vram()).
+  uint64_t dda_pixels_in_flight() const {
+    const auto& valid = top_->rootp->girtd_backend__DOT__u_dda__DOT__valid_q.m_storage;
+    uint64_t n = 0;
+    for (const auto v : valid) n += v;
+    return n;
   }
   const auto& vram() const { return top_->rootp->girtd_backend__DOT__u_vram__DOT__mem; }
   static uint64_t bits(uint64_t word, const BitField& f) { return (word >> f.lsb) & uint64_t(max_of_bits(f.width)); }
@@ -295,9 +289,7 @@ class BackendRtlCore final : public BackendRtl {
   std::vector<int> source_lines_;  // of each parameter set drawn (the first affected one's line)
   FifoLevels fifo_levels_;
   bool series_ = record_series();
-  std::optional<ScreenMapRecorder> maps_;   // with the series on
-  std::array<uint64_t, 2> mapped_from_{};   // DDA clocks and pixels when the mapped triangle was loaded
-  bool mapping_ = false;
+  std::optional<RtlScreenMaps> maps_;  // report.html's heat maps, when asked for
   std::function<void(const BackendRtl::TickProbe&)> on_tick_;
 };
 

@@ -63,6 +63,7 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
   // Made (and reset) outside the timed part, as the pipeline's is.
   const std::unique_ptr<BackendRtl> made = make_backend_rtl(p);
   BackendRtl& rtl = *made;
+  rtl.record_screen_maps();
   const auto t1 = clock::now();
   for (size_t i = 0; i < frames.size(); ++i) {
     rtl.begin_frame(trace.frames[i].settings.background);

@@ -20,8 +20,8 @@ struct TimingComparison {
   FifoSeries model_fifo, rtl_fifo;  // the DDA -> HAD FIFO's largest count per bin
   ScreenMaps model_maps;             // report.html's heat maps: from the golden DDA's pixels,
   std::optional<ScreenMaps> rtl_maps;  // and from the RTL's own pushes and counters
-  double model_wall_s = 0;  // golden DDA + HAD + event model
-  double rtl_wall_s = 0;    // the Verilated back end alone
+  double model_wall_s = 0;  // golden DDA + HAD + event model (and its series)
+  double rtl_wall_s = 0;    // the Verilated back end (and its heat maps)
 };
 
 TimingComparison compare_timing(const Params& p, const std::string& trace_path);

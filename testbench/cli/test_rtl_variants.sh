@@ -8,6 +8,7 @@
 #   the base tick);
 # - under a slow HAD (slow_had.json, merged after CONFIG) the DDA -> HAD FIFO
 #   fills to exactly its configured depth on approx and rtl;
+# - approx's and rtl's report.html heat maps are the same;
 # - a second rtl run reuses the variant (no "building" line).
 # Prints one row per CONFIG.
 # Usage: test_rtl_variants.sh GIRTD_BINARY REPO_ROOT INPUT CONFIG...
@@ -19,6 +20,16 @@ fill_input="traces/sliver_fan.trace"
 counts='[.triangles_drawn, .pixels_generated, .pixels_written, .pixels_blended, .pixels_z_rejected,
          .pixels_dropped, .dda_cycles, .dda_states, .cache, .stages.had.fifo_in_max]'
 
+# The page-miss counts and the waste map's picture of a report.html, hashed.
+heat_maps() {
+  python3 -c '
+import hashlib, re, sys
+page = open(sys.argv[1]).read()
+data = re.search(r"<script id=\"girtd-data\" type=\"application/json\">(.*?)</script>", page, re.S).group(1)
+misses = re.search(r"\"page_misses\":\{[^}]*\"counts\":\[([0-9,]*)\]", data).group(1)
+waste = re.search(r"id=\"waste_map\"[^>]*src=\"([^\"]*)\"", page).group(1)
+print(hashlib.sha256((misses + waste).encode()).hexdigest())' "$1"
+}
 printf '%-14s %-17s %-8s %-9s %-12s %-9s %-14s %-14s\n' config rtl_build built image page_misses fifo_max approx_time_s rtl_time_s
 for cfg in "$@"; do
   name=$(basename "$cfg" .json)
@@ -37,6 +48,10 @@ for cfg in "$@"; do
     || bad "$name: counts differ: rtl $(jq -c "$counts" "$r") approx $(jq -c "$counts" "$a")"
   [[ "$(jq .modeled_time_s "$a")" == "$(jq .modeled_time_s "$r")" ]] \
     && ok || bad "$name: approx's modeled time $(jq .modeled_time_s "$a") s, rtl's $(jq .modeled_time_s "$r") s"
+  # report.html's heat maps: approx's (the event model's misses, the golden DDA's pixels) and rtl's
+  # (the pixels the RTL pushes; with dda.output_latency_clocks >= 2 some are pushed after the next load).
+  [[ "$(heat_maps "$TMP/$name/approx/report.html")" == "$(heat_maps "$TMP/$name/rtl/report.html")" ]] \
+    && ok || bad "$name: approx's and rtl's heat maps differ"
 
   # Reused: the second run builds nothing.
   "$GIRTD" render "$input" --backend rtl --config "$cfg" --out "$TMP/$name/rtl2" --quiet 2> "$TMP/$name/rtl2.err" \
