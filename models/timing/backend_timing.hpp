@@ -76,6 +76,9 @@ class BackendTimingModel {
   // leaves: told to `f` then.
   bool stays_known_at_push() const { return !stepped_; }
   FifoStay last_stay() const { return {pushes_.back(), pops_.back(), count_after_push_}; }
+  // The pop ticks of the last fifo.dda_had_depth + 2 pixels (more than the
+  // FIFO can hold), in push order: for a follower of the FIFO's occupancy.
+  const TickWindow& recent_pops() const { return pops_; }
   void on_fifo_stay(std::function<void(uint64_t push, uint64_t pop)> f);
   // Each page miss's page (report.html's heat map), as the HAD takes it.
   void on_page_miss(std::function<void(uint32_t page)> f);

@@ -27,6 +27,10 @@ class TickWindow {
       head_ = 0;
     }
   }
+  void clear() {
+    ticks_.clear();
+    head_ = cursor_ = 0;
+  }
   bool empty() const { return head_ == ticks_.size(); }
   size_t size() const { return ticks_.size() - head_; }
   uint64_t front() const { return ticks_[head_]; }

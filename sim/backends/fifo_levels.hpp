@@ -3,7 +3,8 @@
 // - rtl reads the FIFO's count after every edge it clocks (level());
 // - approx knows each pixel's push and pop ticks (interval()), in FIFO
 //   order, the pop possibly long before or after the next push is known;
-//   its event model also knows the count just after each push (pushed()).
+//   its event model also knows the count just after each push, and keeps
+//   the pops of the pixels that may still be in the FIFO (follow(), pushed()).
 // A pixel pushed at tick p and popped at tick q is in the FIFO on ticks
 // p+1 .. q (the count is a register, as hw/fifo's). The series holds the
 // largest count in each bin, as the other FIFOs' series do.
@@ -45,25 +46,28 @@ class FifoLevels {
     pops_.push_back(pop);
     last_push_ = push;
   }
-  // The same, given the count from tick push + 1 on (which interval() works
-  // out from the pops): within the bin the open span started in, the pops
-  // since the last push only lowered the count there, so they are not
-  // replayed one by one; they are settled when a push leaves that bin.
-  void pushed(uint64_t push, uint64_t pop, uint64_t count_after) {
+  // The same from a model that keeps, in push order, the pops of at least
+  // every pixel that may still be in the FIFO: `recent_pops` (it must
+  // outlive this). Then each push gives only its tick and the count from
+  // push + 1 on (which interval() works out from the pops).
+  void follow(const TickWindow& recent_pops) { recent_ = &recent_pops; }
+  // Within the bin the open span started in, the pops since the last push
+  // only lowered the count there, so they are not replayed one by one: a
+  // push leaving that bin replays the ones still owed from the model's.
+  void pushed(uint64_t push, uint64_t count_after) {
     if (push + 1 < span_bin_end_) {
       count_ = count_after;
       span_peak_ = std::max(span_peak_, count_after);
-      pops_.push_back(pop);
       last_push_ = push;
       return;
     }
-    settle_pops();
-    interval(push, pop);
+    take_pending(false);  // the last pop held is this pixel's
+    interval(push, recent_->back());
   }
   // The series up to tick `end` (the level then held carried to it).
   FifoSeries series(uint64_t end) const {
     FifoLevels done = *this;
-    done.settle_pops();
+    if (recent_) done.take_pending(true);
     done.retire_pops_up_to(end);
     done.close_span(end);
     return done.series_;
@@ -79,8 +83,14 @@ class FifoLevels {
     series_.note_max(0, from, from, double(span_peak_));
     series_.note_max(0, from, (double(tick) - 0.5) * tick_s_, double(count_));
   }
-  // Pops up to the last push are in count_ already (pushed()).
-  void settle_pops() { pops_.drop_front(pops_.count_below(last_push_ + 1)); }
+  // The pops after the last push, from the model's (those up to it are in
+  // count_ already), but for the pixel being pushed unless `with_last`.
+  void take_pending(bool with_last) {
+    pops_.clear();
+    const size_t n = recent_->size() - (with_last ? 0 : 1);
+    for (size_t i = 0; i < n; ++i)
+      if ((*recent_)[i] > last_push_) pops_.push_back((*recent_)[i]);
+  }
   void retire_pops_up_to(uint64_t tick) {
     while (!pops_.empty() && pops_.front() <= tick) {
       level(pops_.front() + 1, count_ - 1);
@@ -93,6 +103,7 @@ class FifoLevels {
   uint64_t span_from_ = 0, span_peak_ = 0;  // the open span: its first tick, its largest count
   uint64_t span_bin_end_ = 0;               // and the first tick past the bin it started in
   TickWindow pops_;  // of pixels pushed, not yet retired
+  const TickWindow* recent_ = nullptr;  // the model's, when following one
   uint64_t last_push_ = 0;
   FifoSeries series_{true};
 };

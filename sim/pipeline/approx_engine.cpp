@@ -24,6 +24,7 @@ class ApproxEngine : public BackendEngine {
       timing_.on_page_miss([this](uint32_t page) { maps_.page_missed(page); });
     }
     stays_at_push_ = series_ && timing_.stays_known_at_push();
+    if (stays_at_push_) fifo_levels_.follow(timing_.recent_pops());
   }
   void prune(const PrunePlan& plan) override { dda_.skip_unreachable_wraps(plan.unreachable_wraps); }
   uint64_t ready_tick() override { return timing_.dda_ready_tick(); }
@@ -58,7 +59,7 @@ class ApproxEngine : public BackendEngine {
       timing_.pixel({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel, d.layer, e.covered)});
       if (stays_at_push_) {
         const FifoStay s = timing_.last_stay();
-        fifo_levels_.pushed(s.push, s.pop, s.count_after);
+        fifo_levels_.pushed(s.push, s.count_after);
       }
       if (series_) maps_.drawn(e.pixel.x, e.pixel.y);
     });

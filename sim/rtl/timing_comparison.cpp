@@ -27,6 +27,7 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
   FifoLevels levels(p.base_tick_ns * 1e-9);
   model.on_fifo_stay([&](uint64_t push, uint64_t pop) { levels.interval(push, pop); });  // stepped
   const bool at_push = model.stays_known_at_push();
+  if (at_push) levels.follow(model.recent_pops());
   ScreenMapRecorder maps(p);  // fed as the approx back end feeds it
   model.on_page_miss([&](uint32_t page) { maps.page_missed(page); });
   DdaEngine dda(p);
@@ -49,7 +50,7 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
         model.pixel(px);
         if (at_push) {
           const FifoStay s = model.last_stay();
-          levels.pushed(s.push, s.pop, s.count_after);
+          levels.pushed(s.push, s.count_after);
         }
       }
       model.end_triangle(st.cycles);

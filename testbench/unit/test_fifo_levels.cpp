@@ -52,13 +52,15 @@ TEST_CASE("FIFO levels: a peak early in a bin does not spill into the bins after
   CHECK(s.bins()[99][0] == 0);
 }
 
-TEST_CASE("FIFO levels: stays given with their counts give the series of stays alone", "[report]") {
+TEST_CASE("FIFO levels: pushes with their counts, following a model's recent pops, give the series of stays", "[report]") {
   // A FIFO of 16 over 200,000 pixels: random pushes (one per DDA clock of 7
   // ticks at most) and pops (FIFO order, never before the push, never more
   // than 16 inside); the count just after each push counted here by hand.
   std::mt19937_64 rng(11);
   FifoLevels stays(5e-9), counted(5e-9);
   std::vector<uint64_t> pops;  // of the pixels pushed so far
+  TickWindow recent;           // the last 18 of them, as the event model keeps (depth + 2)
+  counted.follow(recent);
   uint64_t push = 0, last_pop = 0;
   for (int i = 0; i < 200000; ++i) {
     push += 7 * (1 + rng() % (rng() % 50 == 0 ? 400 : 3));  // now and then a long gap
@@ -70,7 +72,9 @@ TEST_CASE("FIFO levels: stays given with their counts give the series of stays a
     const uint64_t inside = uint64_t(std::count_if(pops.end() - std::min<ptrdiff_t>(pops.size(), 40), pops.end(),
                                                    [&](uint64_t q) { return q >= push + 1; }));
     stays.interval(push, pop);
-    counted.pushed(push, pop, inside);
+    recent.push_back(pop);
+    if (recent.size() > 18) recent.pop_front();
+    counted.pushed(push, inside);
   }
   const uint64_t end = last_pop + 1000;
   const FifoSeries a = stays.series(end), b = counted.series(end);
