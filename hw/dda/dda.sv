@@ -278,9 +278,7 @@ module dda #(
 
   // ---- Output registers (fig. 4.17): OUT_LATENCY stages, frozen by a stall ----
   logic [girtd_pkg::FIFO_W-1:0] pipe_q[L];
-  // Readable by the testbench (public_flat_rd): the rtl back end's heat maps
-  // give the pixels still in these stages to the triangle that emitted them.
-  logic valid_q[L]  /*verilator public_flat_rd*/;
+  logic valid_q[L];
   // A disabled tick freezes everything, like a stall, but is not counted as one.
   logic hold;
   assign stall = valid_q[L-1] && !out_ready_i;
