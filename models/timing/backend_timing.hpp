@@ -46,10 +46,10 @@ struct BackendTiming {
   int fifo_max = 0;
 };
 
-// A pixel's stay in the DDA -> HAD FIFO: in it on ticks push + 1 .. pop,
-// holding `count_after` pixels (itself included) from push + 1 on.
-struct FifoStay {
-  uint64_t push, pop, count_after;
+// A pixel pushed into the DDA -> HAD FIFO on `tick`: the FIFO holds
+// `count_after` pixels (it included) from tick + 1 on.
+struct FifoPush {
+  uint64_t tick, count_after;
 };
 
 class BackendTimingModel {
@@ -70,14 +70,13 @@ class BackendTimingModel {
   void drain();        // until the DDA and the HAD are idle
 
   const BackendTiming& timing() const { return t_; }
-  // Each pixel's push and pop ticks, in FIFO order (the FIFO's occupancy
-  // over time). Pixel by pixel, the pop is known as the pixel is pushed:
-  // last_stay() after pixel(); with the stepped memory side only once it
-  // leaves: told to `f` then.
+  // The FIFO's occupancy over time. Pixel by pixel, a pixel's pop is known
+  // as it is pushed: last_push() after pixel(), and recent_pops(), the pop
+  // ticks of the last fifo.dda_had_depth + 2 pixels (more than the FIFO can
+  // hold) in push order; with the stepped memory side only once it leaves:
+  // each pixel's push and pop ticks told to `f` then.
   bool stays_known_at_push() const { return !stepped_; }
-  FifoStay last_stay() const { return {pushes_.back(), pops_.back(), count_after_push_}; }
-  // The pop ticks of the last fifo.dda_had_depth + 2 pixels (more than the
-  // FIFO can hold), in push order: for a follower of the FIFO's occupancy.
+  FifoPush last_push() const { return {pushes_.back(), count_after_push_}; }
   const TickWindow& recent_pops() const { return pops_; }
   void on_fifo_stay(std::function<void(uint64_t push, uint64_t pop)> f);
   // Each page miss's page (report.html's heat map), as the HAD takes it.

@@ -7,6 +7,7 @@
 #include "backends/golden_backend.hpp"
 #include "backends/render_session.hpp"
 #include "backends/backend_engine.hpp"
+#include "backends/model_series.hpp"
 #include "backends/series_switch.hpp"
 #include "timing/backend_timing.hpp"
 
@@ -17,14 +18,9 @@ class ApproxEngine : public BackendEngine {
  public:
   ApproxEngine(const Params& p, std::optional<double> sample_rate)
       : period_ticks_(static_cast<uint64_t>(p.ticks(p.dda_clock_ns))), dda_(p), fb_(p.screen_width, p.screen_height, static_cast<uint16_t>(p.depth_clear)), had_(fb_, p.one_minus_nf),
-        timing_(p), maps_(p), fifo_levels_(p.base_tick_ns * 1e-9) {
+        timing_(p) {
     if (sample_rate) sampler_.emplace(*sample_rate);
-    if (series_) {
-      timing_.on_fifo_stay([this](uint64_t push, uint64_t pop) { fifo_levels_.interval(push, pop); });
-      timing_.on_page_miss([this](uint32_t page) { maps_.page_missed(page); });
-    }
-    stays_at_push_ = series_ && timing_.stays_known_at_push();
-    if (stays_at_push_) fifo_levels_.follow(timing_.recent_pops());
+    if (record_series()) series_.emplace(p, timing_);
   }
   void prune(const PrunePlan& plan) override { dda_.skip_unreachable_wraps(plan.unreachable_wraps); }
   uint64_t ready_tick() override { return timing_.dda_ready_tick(); }
@@ -33,7 +29,7 @@ class ApproxEngine : public BackendEngine {
     fb_.clear_back(s.background);
     had_.set_drop_partial(s.qq);
     timing_.begin_frame();
-    maps_.begin_frame();
+    if (series_) series_->begin_frame();
   }
   void draw(const DdaParams& d) override {
     if (!sampler_) return simulate(d);
@@ -57,14 +53,10 @@ class ApproxEngine : public BackendEngine {
     timing_.begin_triangle();
     const DdaRunStats st = dda_.run(d, [&](const DdaEmit& e) {
       timing_.pixel({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel, d.layer, e.covered)});
-      if (stays_at_push_) {
-        const FifoStay s = timing_.last_stay();
-        fifo_levels_.pushed(s.push, s.count_after);
-      }
-      if (series_) maps_.drawn(e.pixel.x, e.pixel.y);
+      if (series_) series_->pixel(e.pixel.x, e.pixel.y);
     });
     timing_.end_triangle(st.cycles);
-    if (series_) maps_.end_triangle(st.cycles, st.emitted);
+    if (series_) series_->end_triangle(st.cycles, st.emitted);
     accumulate(r_.dda, st);
     ++r_.triangles_drawn;
     r_.pixels_generated += st.emitted;
@@ -94,11 +86,11 @@ class ApproxEngine : public BackendEngine {
   }
   std::optional<ScreenMaps> screen_maps() const override {
     if (!series_) return std::nullopt;
-    return maps_.maps();
+    return series_->maps();
   }
   std::optional<FifoSeries> fifo_levels(uint64_t end) const override {
     if (!series_) return std::nullopt;
-    return fifo_levels_.series(end);
+    return series_->fifo(end);
   }
   RgbImage shown() const override { return shown_image(fb_); }
   std::vector<uint16_t> z_plane() const override { return fb_.z_plane(); }
@@ -111,10 +103,7 @@ class ApproxEngine : public BackendEngine {
   BackendTimingModel timing_;
   BackendResult r_;
   std::optional<TriangleSampler> sampler_;
-  ScreenMapRecorder maps_;
-  FifoLevels fifo_levels_;
-  bool series_ = record_series();
-  bool stays_at_push_ = false;  // the FIFO's series fed pixel by pixel here, not by the model's callback
+  std::optional<ModelSeries> series_;  // report.html's, unless GIRTD_NO_SERIES
 };
 
 }  // namespace

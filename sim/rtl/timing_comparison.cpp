@@ -24,12 +24,7 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
 
   const auto t0 = clock::now();
   BackendTimingModel model(p);
-  FifoLevels levels(p.base_tick_ns * 1e-9);
-  model.on_fifo_stay([&](uint64_t push, uint64_t pop) { levels.interval(push, pop); });  // stepped
-  const bool at_push = model.stays_known_at_push();
-  if (at_push) levels.follow(model.recent_pops());
-  ScreenMapRecorder maps(p);  // fed as the approx back end feeds it
-  model.on_page_miss([&](uint32_t page) { maps.page_missed(page); });
+  ModelSeries series(p, model);  // as the approx back end records them
   DdaEngine dda(p);
   FrameBuffer fb(p.screen_width, p.screen_height, uint16_t(p.depth_clear));
   Had had(fb, p.one_minus_nf);
@@ -37,30 +32,26 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
   for (size_t i = 0; i < frames.size(); ++i) {
     fb.clear_back(trace.frames[i].settings.background);
     model.begin_frame();
-    maps.begin_frame();
+    series.begin_frame();
     for (const DdaParams& d : frames[i]) {
       pixels.clear();
       const DdaRunStats st = dda.run(d, [&](const DdaEmit& e) {
         pixels.push_back({e.cycle, e.pixel.x, e.pixel.y, had.update(e.pixel)});
-        maps.drawn(e.pixel.x, e.pixel.y);
       });
-      maps.end_triangle(st.cycles, st.emitted);
       model.begin_triangle();
       for (const TimedPixel& px : pixels) {
         model.pixel(px);
-        if (at_push) {
-          const FifoStay s = model.last_stay();
-          levels.pushed(s.push, s.count_after);
-        }
+        series.pixel(px.x, px.y);
       }
       model.end_triangle(st.cycles);
+      series.end_triangle(st.cycles, st.emitted);
     }
     model.end_frame();
     fb.swap();
   }
   c.model = model.timing();
-  c.model_fifo = levels.series(c.model.ticks);
-  c.model_maps = maps.maps();
+  c.model_fifo = series.fifo(c.model.ticks);
+  c.model_maps = series.maps();
   // Made (and reset) outside the timed part, as the pipeline's is.
   const std::unique_ptr<BackendRtl> made = make_backend_rtl(p);
   BackendRtl& rtl = *made;

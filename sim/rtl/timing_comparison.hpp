@@ -7,8 +7,7 @@
 #include <string>
 
 #include "config/params.hpp"
-#include "backends/fifo_levels.hpp"
-#include "backends/screen_maps.hpp"
+#include "backends/model_series.hpp"
 #include "rtl/backend_rtl.hpp"
 #include "timing/backend_timing.hpp"
 
