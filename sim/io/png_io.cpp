@@ -35,6 +35,18 @@ struct PngReader {
   }
 };
 
+// The PNG in memory: first its size, then its bytes.
+std::string write_to_memory(png_image& image, const void* pixels, const void* colormap) {
+  png_alloc_size_t size = 0;
+  if (!png_image_write_to_memory(&image, nullptr, &size, 0, pixels, 0, colormap))
+    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
+  std::string out(size, '\0');
+  if (!png_image_write_to_memory(&image, out.data(), &size, 0, pixels, 0, colormap))
+    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
+  out.resize(size);
+  return out;
+}
+
 png_image rgb_image(const RgbImage& img) {
   png_image image;
   std::memset(&image, 0, sizeof image);
@@ -55,14 +67,7 @@ void write_png_rgb(const std::string& path, const RgbImage& img) {
 std::string png_rgb_bytes(const RgbImage& img, bool fast) {
   png_image image = rgb_image(img);
   if (fast) image.flags |= PNG_IMAGE_FLAG_FAST;
-  png_alloc_size_t size = 0;  // first the size, then the bytes
-  if (!png_image_write_to_memory(&image, nullptr, &size, 0, img.rgb.data(), 0, nullptr))
-    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
-  std::string out(size, '\0');
-  if (!png_image_write_to_memory(&image, out.data(), &size, 0, img.rgb.data(), 0, nullptr))
-    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
-  out.resize(size);
-  return out;
+  return write_to_memory(image, img.rgb.data(), nullptr);
 }
 
 std::string png_indexed_bytes(int width, int height, const std::vector<uint8_t>& indices,
@@ -75,14 +80,7 @@ std::string png_indexed_bytes(int width, int height, const std::vector<uint8_t>&
   image.format = PNG_FORMAT_RGB_COLORMAP;
   image.colormap_entries = 256;
   image.flags |= PNG_IMAGE_FLAG_FAST;
-  png_alloc_size_t size = 0;  // first the size, then the bytes
-  if (!png_image_write_to_memory(&image, nullptr, &size, 0, indices.data(), 0, palette.data()))
-    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
-  std::string out(size, '\0');
-  if (!png_image_write_to_memory(&image, out.data(), &size, 0, indices.data(), 0, palette.data()))
-    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
-  out.resize(size);
-  return out;
+  return write_to_memory(image, indices.data(), palette.data());
 }
 
 void write_png_gray16(const std::string& path, int width, int height, const std::vector<uint16_t>& values) {
