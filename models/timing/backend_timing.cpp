@@ -123,10 +123,28 @@ void BackendTimingModel::pixel(const TimedPixel& p) {
   tri_wait_ticks_ += at - due;
   push(p, at);
   if (!stepped_) {
-    count_after_push_ = fifo_count_at(at + 1);
-    t_.fifo_max = std::max<int>(t_.fifo_max, int(count_after_push_));
+    const uint64_t count_after = fifo_count_at(at + 1);
+    t_.fifo_max = std::max<int>(t_.fifo_max, int(count_after));
+    if (at >= watch_at_ && watch_) [[unlikely]] {
+      watch_at_ = watch_(pushes_.size() > 1 ? recent_push(1) : FifoPush{0, 0}, watch_peak_, {at, count_after});
+      watch_peak_ = 0;
+    }
+    watch_peak_ = std::max(watch_peak_, count_after);
   }
   tri_last_push_ = at;
+}
+
+// The windows hold the pixels pushed since any pixel they dropped was popped
+// (the FIFO holds fewer), so the count after an earlier push still held
+// follows from them.
+FifoPush BackendTimingModel::recent_push(size_t from_back) const {
+  const uint64_t tick = pushes_[pushes_.size() - 1 - from_back];
+  return {tick, fifo_count_at(tick + 1)};
+}
+
+BackendTimingModel::FifoWatchState BackendTimingModel::fifo_watch() const {
+  if (pushes_.empty()) return {std::nullopt, watch_peak_};
+  return {recent_push(0), watch_peak_};
 }
 
 void BackendTimingModel::end_triangle(uint64_t dda_cycles) {

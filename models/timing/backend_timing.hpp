@@ -71,14 +71,26 @@ class BackendTimingModel {
 
   const BackendTiming& timing() const { return t_; }
   // The FIFO's occupancy over time. Pixel by pixel, a pixel's pop is known
-  // as it is pushed: last_push() after pixel(), and recent_pops(), the pop
-  // ticks of the last fifo.dda_had_depth + 2 pixels (more than the FIFO can
-  // hold) in push order; with the stepped memory side only once it leaves:
-  // each pixel's push and pop ticks told to `f` then.
+  // as it is pushed: recent_pops(), the pop ticks of the last
+  // fifo.dda_had_depth + 2 pixels (more than the FIFO can hold) in push
+  // order; with the stepped memory side only once it leaves: each pixel's
+  // push and pop ticks told to on_fifo_stay's `f` then.
   bool stays_known_at_push() const { return !stepped_; }
-  FifoPush last_push() const { return {pushes_.back(), count_after_push_}; }
   const TickWindow& recent_pops() const { return pops_; }
   void on_fifo_stay(std::function<void(uint64_t push, uint64_t pop)> f);
+  // report.html's FIFO series without a call per pixel: the model keeps the
+  // largest count after a push since it last called `f`, and calls it on
+  // the first push on or after the tick `f` last returned (the watcher's
+  // bin end), with the push before it and that largest count (this push's
+  // not included). First call: on the first push. Not with the stepped
+  // memory side. fifo_watch() is the same for the last push, for the end.
+  using FifoWatch = std::function<uint64_t(FifoPush before, uint64_t peak, FifoPush now)>;
+  void watch_fifo(FifoWatch f) { watch_ = std::move(f); }
+  struct FifoWatchState {
+    std::optional<FifoPush> last;
+    uint64_t peak;
+  };
+  FifoWatchState fifo_watch() const;
   // Each page miss's page (report.html's heat map), as the HAD takes it.
   void on_page_miss(std::function<void(uint32_t page)> f);
   // The tick the DDA can take its next parameter set (its first enabled
@@ -97,6 +109,7 @@ class BackendTimingModel {
   uint64_t next_en(uint64_t tick) const;  // first DDA-enabled tick at or after `tick`
   void push(const TimedPixel& p, uint64_t tick);
   uint64_t fifo_count_at(uint64_t tick) const;  // pushed before `tick` and not popped before it
+  FifoPush recent_push(size_t from_back) const;  // 0: the last one (the windows must hold it)
   uint64_t wait_for_room(uint64_t at);            // the first DDA tick from `at` with room in the FIFO
   void drain_stepped();  // drain(), end_frame() and begin_frame() with the stepped memory side
   void end_frame_stepped();
@@ -113,7 +126,8 @@ class BackendTimingModel {
   uint64_t vram_free_ = 0;          // the first tick the VRAM takes a request after a write-behind write
   TickWindow pops_;  // pop ticks of pixels possibly still in the FIFO
   TickWindow pushes_;
-  uint64_t count_after_push_ = 0;  // the FIFO's count just after the last push
+  FifoWatch watch_;
+  uint64_t watch_at_ = 0, watch_peak_ = 0;  // the next push tick watch_ hears of, the peak until then
   uint64_t tri_clock0_ = 0, tri_wait_ticks_ = 0;  // the triangle being streamed
   std::optional<uint64_t> tri_last_push_;
   BackendTiming t_;

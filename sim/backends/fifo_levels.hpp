@@ -4,7 +4,8 @@
 // - approx knows each pixel's push and pop ticks (interval()), in FIFO
 //   order, the pop possibly long before or after the next push is known;
 //   its event model also knows the count just after each push, and keeps
-//   the pops of the pixels that may still be in the FIFO (follow(), pushed()).
+//   the pops of the pixels that may still be in the FIFO, and tells the
+//   pushes that leave a bin (follow(), push_leaving_bin()).
 // A pixel pushed at tick p and popped at tick q is in the FIFO on ticks
 // p+1 .. q (the count is a register, as hw/fifo's). The series holds the
 // largest count in each bin, as the other FIFOs' series do.
@@ -13,8 +14,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "pipeline/time_series.hpp"
+#include "timing/backend_timing.hpp"
 #include "timing/tick_window.hpp"
 
 namespace girtd {
@@ -48,25 +51,23 @@ class FifoLevels {
   }
   // The same from a model that keeps, in push order, the pops of at least
   // every pixel that may still be in the FIFO: `recent_pops` (it must
-  // outlive this). Then each push gives only its tick and the count from
-  // push + 1 on (which interval() works out from the pops).
+  // outlive this), and tells only some pushes (BackendTimingModel::
+  // watch_fifo): inside the bin the open span started in, pushes only raise
+  // its peak and pops only lower the count, so the model keeps that peak
+  // and calls at the first push that leaves the bin (returned here): with
+  // the push before it, the pops since that one are replayed from the model's.
   void follow(const TickWindow& recent_pops) { recent_ = &recent_pops; }
-  // Within the bin the open span started in, the pops since the last push
-  // only lowered the count there, so they are not replayed one by one: a
-  // push leaving that bin replays the ones still owed from the model's.
-  void pushed(uint64_t push, uint64_t count_after) {
-    if (push + 1 < span_bin_end_) {
-      count_ = count_after;
-      span_peak_ = std::max(span_peak_, count_after);
-      last_push_ = push;
-      return;
-    }
+  uint64_t push_leaving_bin(FifoPush before, uint64_t peak, FifoPush now) {
+    catch_up(before, peak);
     take_pending(false);  // the last pop held is this pixel's
-    interval(push, recent_->back());
+    interval(now.tick, recent_->back());
+    return span_bin_end_ > 0 ? span_bin_end_ - 1 : 0;
   }
   // The series up to tick `end` (the level then held carried to it).
-  FifoSeries series(uint64_t end) const {
+  // Following a model: `last`, its last push, and the peak since it last called.
+  FifoSeries series(uint64_t end, std::optional<FifoPush> last = std::nullopt, uint64_t peak = 0) const {
     FifoLevels done = *this;
+    if (last) done.catch_up(*last, peak);
     if (recent_) done.take_pending(true);
     done.retire_pops_up_to(end);
     done.close_span(end);
@@ -74,6 +75,12 @@ class FifoLevels {
   }
 
  private:
+  // The pushes the model did not tell: the last one and their peak.
+  void catch_up(FifoPush last, uint64_t peak) {
+    count_ = last.count_after;
+    last_push_ = last.tick;
+    span_peak_ = std::max(span_peak_, peak);
+  }
   // The open span, ticks span_from_ .. tick - 1: its peak in the bin it
   // started in (where all its changes were), its last count on every bin up
   // to half a tick before `tick` (a bin that starts at `tick` does not get it).
