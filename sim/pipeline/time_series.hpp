@@ -4,13 +4,15 @@
 // kMaxBins, neighbours merge and the bin doubles, so a run longer than
 // kMaxBins us keeps between kMaxBins / 2 and kMaxBins bins (a 1 s run: bins
 // of 1.024 ms). Plain C++
-// (the report reads it). Its cost is measured by `girtd bench`.
+// (the report reads it). Its cost is measured by `girtd bench --speed`.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
+
+#include "backends/series_switch.hpp"
 
 namespace girtd {
 
@@ -22,7 +24,15 @@ class TimeSeries {
 
   // `peaks`: the channels hold maxima (two bins merge to the larger), else
   // seconds (two bins merge to their sum).
-  explicit TimeSeries(bool peaks = false) : peaks_(peaks) {}
+  // When series are recorded, all kMaxBins bins are allocated and written
+  // here, before the run: a bin first touched during it would cost a page
+  // fault, a few us on a VM, more than a short run's whole series (measured
+  // by `girtd bench --speed`).
+  explicit TimeSeries(bool peaks = false) : peaks_(peaks) {
+    if (!record_series()) return;
+    bins_.resize(kMaxBins);
+    bins_.clear();
+  }
 
   double bin_s() const { return bin_s_; }
   const std::vector<Bin>& bins() const { return bins_; }
@@ -53,12 +63,16 @@ class TimeSeries {
     const size_t need = size_t(t / bin_s_) + 1;
     if (bins_.size() < need) bins_.resize(need, Bin{});
   }
-  void coarsen() {
-    std::vector<Bin> merged((bins_.size() + 1) / 2, Bin{});
-    for (size_t i = 0; i < bins_.size(); ++i)
-      for (size_t c = 0; c < Channels; ++c)
-        merged[i / 2][c] = peaks_ ? std::max(merged[i / 2][c], bins_[i][c]) : merged[i / 2][c] + bins_[i][c];
-    bins_ = std::move(merged);
+  void coarsen() {  // in place: bin i takes 2i and 2i + 1, both at or after it
+    const size_t merged = (bins_.size() + 1) / 2;
+    for (size_t i = 0; i < merged; ++i) {
+      Bin m = bins_[2 * i];
+      if (2 * i + 1 < bins_.size())
+        for (size_t c = 0; c < Channels; ++c)
+          m[c] = peaks_ ? std::max(m[c], bins_[2 * i + 1][c]) : m[c] + bins_[2 * i + 1][c];
+      bins_[i] = m;
+    }
+    bins_.resize(merged);
     bin_s_ *= 2;
   }
 
