@@ -44,14 +44,14 @@ class ScreenMapRecorder {
   // Where a timing model tells the misses itself (approx): each pixel drawn,
   // and each miss's page.
   void drawn(int x, int y) {
-    // The DDA walks rows: most pixels extend the run of the row before them.
-    if (y == run_.y && (x == run_.hi + 1 || x == run_.lo - 1)) {
-      run_.lo = std::min(run_.lo, x);
-      run_.hi = std::max(run_.hi, x);
-      return;
+    // The DDA emits each row of a triangle once, as one streak of neighbours
+    // (test_dda_properties.cpp): a row is its lowest and highest x.
+    if (y != run_.y) [[unlikely]] {
+      if (run_.y >= 0) drawn_.push_back(run_);
+      run_ = {y, x, x};
     }
-    if (run_.y >= 0) drawn_.push_back(run_);
-    run_ = {y, x, x};
+    run_.lo = std::min(run_.lo, x);
+    run_.hi = std::max(run_.hi, x);
   }
   void page_missed(uint32_t page) { ++m_.page_misses[page]; }
   void end_triangle(uint64_t dda_cycles, uint64_t emitted);

@@ -121,6 +121,40 @@ TEST_CASE("DDA emits every inside lattice pixel exactly once and nothing else", 
   CHECK(total_pixels > 1000000);  // the sample reaches large triangles
 }
 
+// report.html's DDA-waste map keeps each row of a triangle as one run, its
+// lowest and highest x (sim/backends/screen_maps.hpp): that holds because the
+// DDA emits a row once, as one streak of neighbours (RIGHT from the row's
+// first pixel, then LEFT from beside it; or RUN one way), rows going down.
+TEST_CASE("DDA emits each row of a triangle once, as one contiguous streak", "[dda][property]") {
+  Params p = Params::defaults();
+  std::mt19937 rng(20261202);
+  const double qs[4] = {0, 0.5, 1, 2};
+  uint64_t rows = 0;
+  for (int n = 0; n < 1500; ++n) {
+    p.xy_compare_pipelined = (n % 2) == 1;
+    p.walk_fix = (n % 3) != 0;  // also DDApix as written
+    FrameSettings f;
+    f.q = qs[rng() % 4];
+    const Triangle t = random_triangle(rng, 1024);
+    DdaParams d;
+    if (DdaPreparer(p).prepare(t, f, d) != PrepareResult::kReady) continue;
+    std::vector<std::pair<int, int>> px;  // (y, x) in emission order
+    DdaEngine(p).run(d, [&](const DdaEmit& e) { px.emplace_back(e.pixel.y, e.pixel.x); });
+    INFO("triangle " << n << " q " << f.q << " walk_fix " << p.walk_fix);
+    for (size_t i = 0; i < px.size();) {
+      size_t j = i;
+      std::set<int> xs;
+      for (; j < px.size() && px[j].first == px[i].first; ++j) xs.insert(px[j].second);
+      REQUIRE(xs.size() == j - i);                               // no pixel twice
+      REQUIRE(*xs.rbegin() - *xs.begin() + 1 == int(xs.size()));  // no gap
+      if (j < px.size()) REQUIRE(px[j].first > px[i].first);     // the row is not visited again
+      ++rows;
+      i = j;
+    }
+  }
+  CHECK(rows > 80000);
+}
+
 TEST_CASE("DDA EP error stays within the rounding bound of the exact planes", "[dda][property]") {
   const ErrorScan scan = scan_errors(Params::defaults(), 600, 7);
   INFO("worst error / bound = " << scan.worst_ratio << " over " << scan.pixels << " pixels, "
