@@ -35,11 +35,10 @@ struct PngReader {
   }
 };
 
-// The PNG in memory: first its size, then its bytes.
+// The PNG in memory, compressed once into a buffer of libpng's bound for
+// the image (asking for the size first would compress it twice).
 std::string write_to_memory(png_image& image, const void* pixels, const void* colormap) {
-  png_alloc_size_t size = 0;
-  if (!png_image_write_to_memory(&image, nullptr, &size, 0, pixels, 0, colormap))
-    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
+  png_alloc_size_t size = PNG_IMAGE_PNG_SIZE_MAX(image);
   std::string out(size, '\0');
   if (!png_image_write_to_memory(&image, out.data(), &size, 0, pixels, 0, colormap))
     throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
