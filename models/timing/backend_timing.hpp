@@ -80,10 +80,10 @@ class BackendTimingModel {
   void on_fifo_stay(std::function<void(uint64_t push, uint64_t pop)> f);
   // report.html's FIFO series without a call per pixel: the model keeps the
   // largest count after a push since it last called `f`, and calls it on
-  // the first push on or after the tick `f` last returned (the watcher's
-  // bin end), with the push before it and that largest count (this push's
-  // not included). First call: on the first push. Not with the stepped
-  // memory side. fifo_watch() is the same for the last push, for the end.
+  // the first push on or after the tick `f` last returned (the last tick of
+  // the watcher's bin), with the push before it and that largest count (this
+  // push's not included). First call: on the first push. Not with the
+  // stepped memory side. fifo_watch() is the same for the last push, for the end.
   using FifoWatch = std::function<uint64_t(FifoPush before, uint64_t peak, FifoPush now)>;
   void watch_fifo(FifoWatch f) { watch_ = std::move(f); }
   struct FifoWatchState {
@@ -109,7 +109,9 @@ class BackendTimingModel {
   uint64_t next_en(uint64_t tick) const;  // first DDA-enabled tick at or after `tick`
   void push(const TimedPixel& p, uint64_t tick);
   uint64_t fifo_count_at(uint64_t tick) const;  // pushed before `tick` and not popped before it
-  FifoPush recent_push(size_t from_back) const;  // 0: the last one (the windows must hold it)
+  // 0: the last push, 1: the one before (exact for these two only: further
+  // back, a pixel the windows dropped may not have been popped yet).
+  FifoPush recent_push(size_t from_back) const;
   uint64_t wait_for_room(uint64_t at);            // the first DDA tick from `at` with room in the FIFO
   void drain_stepped();  // drain(), end_frame() and begin_frame() with the stepped memory side
   void end_frame_stepped();

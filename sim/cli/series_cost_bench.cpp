@@ -54,8 +54,9 @@ SeriesCostBench run_series_cost_bench(const ConfigFiles& config, const std::stri
       "With: the stage timelines, the heat maps and the FIFOs' occupancy recorded, as every timed run does. "
       "Without: `GIRTD_NO_SERIES=1`. The two renders of a pair run one after the other (each first every other "
       "time); the cost is the median over the pairs of their ratio, the times the medians of each. `wall_s` "
-      "covers the simulation, where the series are recorded; the process time adds loading the input and "
-      "writing frame.png, report.json and report.html (with the series, the page holds the charts and maps).\n\n"
+      "covers the simulation, where the series are recorded (their memory is allocated and touched before it, "
+      "with the rest of the model); the process time adds that, loading the input and writing frame.png, "
+      "report.json and report.html (with the series, the page holds the charts and maps).\n\n"
       "| input | back end | pairs | wall s with | without | cost | process s with | without | cost | same report |\n"
       "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const char* input : kInputs) {

@@ -36,14 +36,21 @@ struct PngReader {
 };
 
 // The PNG in memory, compressed once into a buffer of libpng's bound for
-// the image (asking for the size first would compress it twice).
+// the image (asking for the size first would compress it twice). Should a
+// zlib exceed the bound, libpng says the size it needs: once more with that.
 std::string write_to_memory(png_image& image, const void* pixels, const void* colormap) {
-  png_alloc_size_t size = PNG_IMAGE_PNG_SIZE_MAX(image);
-  std::string out(size, '\0');
-  if (!png_image_write_to_memory(&image, out.data(), &size, 0, pixels, 0, colormap))
-    throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
-  out.resize(size);
-  return out;
+  std::string out(PNG_IMAGE_PNG_SIZE_MAX(image), '\0');
+  for (int attempt = 0;; ++attempt) {
+    png_alloc_size_t size = out.size();
+    if (png_image_write_to_memory(&image, out.data(), &size, 0, pixels, 0, colormap)) {
+      out.resize(size);
+      return out;
+    }
+    if (attempt > 0 || size <= out.size())
+      throw std::runtime_error(std::string("cannot encode PNG: ") + image.message);
+    out.assign(size, '\0');
+    image.warning_or_error = 0;
+  }
 }
 
 png_image rgb_image(const RgbImage& img) {

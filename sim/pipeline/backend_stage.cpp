@@ -116,7 +116,7 @@ void BackendStage::run() {
       case TokenKind::kItem:
         ++a_.items;
         engine_.draw(tok.item);
-        if (series_) timeline_.read(engine_.now_tick(), engine_.counters(), true);
+        if (series_) timeline_.read(engine_.now_tick(), engine_.counters());
         if (progress_ && (++triangles & 15) == 0) progress_(tok.frame, triangles, at(engine_.now_tick()).to_seconds());
         break;
       case TokenKind::kFrameEnd:

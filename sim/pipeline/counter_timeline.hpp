@@ -1,17 +1,14 @@
 // The DDA's and the HAD's timelines for report.html, from the back end's own
-// counters (BackendCounters), sampled: read at every frame's clear and end,
-// and when the DDA takes a parameter set once the modeled time has left the
-// bin of the last reading (a read inside it costs a compare). The busy and
-// blocked time each gained since the last reading is spread evenly over the
-// ticks between the two readings, and the rest counts as starved. A counter
-// may run ahead of the reading's tick (approx counts a pixel's HAD time when
-// it is pushed): what does not fit in the interval is carried to the next.
-// Bin resolution (or a triangle's, if longer), for approx and rtl alike, at
-// no per-tick cost; the totals are the counters'.
+// counters (BackendCounters) read whenever the DDA takes a parameter set and
+// at every frame's clear and end: the busy and blocked time each gained since
+// the last reading is spread evenly over the ticks between the two readings,
+// and the rest counts as starved. A counter may run ahead of the reading's
+// tick (approx counts a pixel's HAD time when it is pushed): what does not
+// fit in the interval is carried to the next. Triangle resolution, for
+// approx and rtl alike, at no per-tick cost; the totals are the counters'.
 #pragma once
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 
 #include "backends/backend_engine.hpp"
@@ -24,9 +21,8 @@ class CounterTimeline {
  public:
   CounterTimeline(double tick_s, double dda_clock_s) : tick_s_(tick_s), clock_s_(dda_clock_s) {}
 
-  // `sample`: a reading that may be skipped while in the last one's bin.
-  void read(uint64_t now_tick, const BackendCounters& c, bool sample = false) {
-    if (now_tick <= tick_ || (sample && now_tick < next_tick_)) return;
+  void read(uint64_t now_tick, const BackendCounters& c) {
+    if (now_tick <= tick_) return;
     const double t0 = double(tick_) * tick_s_, t1 = double(now_tick) * tick_s_, span = t1 - t0;
     owed_busy_ += double(c.dda_clocks - last_.dda_clocks) * clock_s_;
     owed_blocked_ += double(c.dda_wait_ticks - last_.dda_wait_ticks) * tick_s_;
@@ -43,15 +39,13 @@ class CounterTimeline {
     had_.add_span(size_t(StageState::kStarved), t0, t1, std::max(0.0, span - had_busy) / span);
     tick_ = now_tick;
     last_ = c;
-    const double bin_ticks = dda_.bin_s() / tick_s_;  // the bins only widen
-    next_tick_ = uint64_t((std::floor(double(now_tick) / bin_ticks) + 1) * bin_ticks);
   }
   const StageSeries& dda() const { return dda_; }
   const StageSeries& had() const { return had_; }
 
  private:
   double tick_s_, clock_s_;
-  uint64_t tick_ = 0, next_tick_ = 0;  // the last reading's tick; the first past its bin
+  uint64_t tick_ = 0;
   BackendCounters last_;
   double owed_busy_ = 0, owed_blocked_ = 0, owed_had_ = 0;  // counted, not yet placed
   StageSeries dda_, had_;

@@ -25,9 +25,10 @@ class TimeSeries {
   // `peaks`: the channels hold maxima (two bins merge to the larger), else
   // seconds (two bins merge to their sum).
   // When series are recorded, all kMaxBins bins are allocated and written
-  // here, before the run: a bin first touched during it would cost a page
-  // fault, a few us on a VM, more than a short run's whole series (measured
-  // by `girtd bench --speed`).
+  // here, as the model is built, before the run: a bin first touched during
+  // it would cost a page fault, a few us on a VM, more than a short run's
+  // whole series. `girtd bench --speed` measures both: the run (`wall_s`)
+  // and the process, where these faults now fall.
   explicit TimeSeries(bool peaks = false) : peaks_(peaks) {
     if (!record_series()) return;
     bins_.resize(kMaxBins);

@@ -17,6 +17,7 @@
 #include "dda/dda_engine.hpp"
 #include "dda/dda_preparer.hpp"
 #include "dda/nf_unit.hpp"
+#include "backends/screen_maps.hpp"
 #include "workloads/random_triangles.hpp"
 
 namespace girtd {
@@ -153,6 +154,46 @@ TEST_CASE("DDA emits each row of a triangle once, as one contiguous streak", "[d
     }
   }
   CHECK(rows > 80000);
+}
+
+// The waste map's rows (ScreenMapRecorder::drawn) against the DDA's pixels
+// themselves: painted are exactly the pixels emitted, each with the share of
+// wasted clocks worked out here.
+TEST_CASE("the DDA-waste map paints exactly the pixels the DDA emitted", "[dda][property][report]") {
+  Params p = Params::defaults();
+  std::mt19937 rng(2026120202);
+  const double qs[4] = {0, 0.5, 1, 2};
+  int checked = 0;
+  for (int n = 0; n < 300; ++n) {
+    p.walk_fix = (n % 3) != 0;
+    FrameSettings f;
+    f.q = qs[rng() % 4];
+    const Triangle t = random_triangle(rng, 1024);
+    DdaParams d;
+    if (DdaPreparer(p).prepare(t, f, d) != PrepareResult::kReady) continue;
+    ScreenMapRecorder rec(p);
+    rec.begin_frame();
+    std::set<std::pair<int, int>> emitted;
+    const DdaRunStats st = DdaEngine(p).run(d, [&](const DdaEmit& e) {
+      emitted.insert({e.pixel.x, e.pixel.y});
+      rec.drawn(e.pixel.x, e.pixel.y);
+    });
+    rec.end_triangle(st.cycles, st.emitted);
+    const uint8_t waste = uint8_t(254 * (st.cycles - st.emitted) / st.cycles);
+    const ScreenMaps& m = rec.maps();
+    std::set<std::pair<int, int>> painted;
+    for (int y = 0; y < m.height; ++y)
+      for (int x = 0; x < m.width; ++x) {
+        const uint8_t v = m.dda_waste[size_t(y) * size_t(m.width) + size_t(x)];
+        if (v == ScreenMaps::kNone) continue;
+        painted.insert({x, y});
+        REQUIRE(v == waste);
+      }
+    INFO("triangle " << n << " q " << f.q << " walk_fix " << p.walk_fix);
+    REQUIRE(painted == emitted);
+    ++checked;
+  }
+  CHECK(checked > 250);
 }
 
 TEST_CASE("DDA EP error stays within the rounding bound of the exact planes", "[dda][property]") {
