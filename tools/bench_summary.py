@@ -13,7 +13,7 @@ Reads testbench/measured/bench.json (copied from out/bench/bench.json by
             rendered now, deterministic
   culling   culling in front of lighting on every sample scene, modeled (README.md)
   pruning   simulator pruning's wall-time ratio per sample input (README.md)
-  speed     rtl's DDA clocks per wall second and what report.html's series cost
+  speed     rtl's DDA clocks per wall second, golden against llvmpipe, and what report.html's series cost
             (sim/README.md; testbench/measured/speed/speed.json, from `girtd bench --speed`)
 """
 import json
@@ -133,6 +133,13 @@ def speed(_):
         out.append(f"| `{pathlib.Path(r['input']).name}` | {r['dda_cycles']:,.0f} | {r['rtl_wall_s']:.3f} | "
                    f"{r['rtl_dda_clocks_per_s']:.2e} | {r['dda_alone_clocks_per_s']:.2e} | "
                    f"{r['rtl_dda_clocks_per_s'] / r['dda_alone_clocks_per_s']:.2f} |")
+    if s.get("golden_vs_llvmpipe"):
+        out += ["", "golden against Mesa's llvmpipe, single-threaded, on the same triangles (median of 5 each; the "
+                "target: within 2x).", "", "| workload | pixels | golden wall s | llvmpipe s | golden / llvmpipe |",
+                "|---|---|---|---|---|"]
+        for r in s["golden_vs_llvmpipe"]:
+            out.append(f"| {r['workload']} | {r['pixels_generated']:,.0f} | {r['golden_wall_s']:.3f} | "
+                       f"{r['llvmpipe_s']:.3f} | {r['ratio']:.1f}x |")
     out += ["", "What report.html's series cost: the median over pairs of renders (with, without) of their ratio.", "",
             "| input | back end | pairs | wall s with the series | without | cost | process s with | without | cost |",
             "|---|---|---|---|---|---|---|---|---|"]

@@ -19,6 +19,7 @@
 #include "cli/config_loader.hpp"
 #include "cli/output_set.hpp"
 #include "cli/leave_out_bench.hpp"
+#include "cli/golden_speed_bench.hpp"
 #include "cli/rtl_speed_bench.hpp"
 #include "cli/series_cost_bench.hpp"
 #include "cli/pipeline_bench.hpp"
@@ -66,14 +67,16 @@ int run_bench(const BenchArgs& a) {
   }
   if (a.speed_only) {
     const RtlSpeedBench rb = run_rtl_speed_bench(params, config, out_dir);
+    const GoldenSpeedBench gb = run_golden_speed_bench(params, config, out_dir);
     const SeriesCostBench sb = run_series_cost_bench(config, out_dir);
     OutputSet files(out_dir);
     files.add_text("speed.json", nlohmann::json{{"measured_on", measured_on()}, {"rtl_speed", rb.rows},
-                                                {"series_cost", sb.rows}, {"config", params.source}}
+                                                {"golden_vs_llvmpipe", gb.rows}, {"series_cost", sb.rows},
+                                                {"config", params.source}}
                                      .dump(2) + "\n");
-    files.add_text("speed.md", "# girtd bench --speed\n" + rb.markdown + sb.markdown);
+    files.add_text("speed.md", "# girtd bench --speed\n" + rb.markdown + gb.markdown + sb.markdown);
     files.commit();
-    const int failures = rb.failures + sb.failures;
+    const int failures = rb.failures + gb.failures + sb.failures;
     std::printf("%d failure(s); wrote %s\n", failures, files.path("speed.md").c_str());
     return failures ? 1 : 0;
   }

@@ -1,0 +1,78 @@
+#include "cli/golden_speed_bench.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include "accuracy/llvmpipe_render.hpp"
+#include "cli/bench_stats.hpp"
+#include "cli/child_render.hpp"
+#include "io/subprocess.hpp"
+#include "io/trace_reader.hpp"
+
+namespace girtd {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kRuns = 5;
+constexpr int kTriangles = 20000;
+constexpr double kWithin = 2.0;  // golden at most this many times llvmpipe's time
+
+}  // namespace
+
+GoldenSpeedBench run_golden_speed_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir) {
+  GoldenSpeedBench b;
+  const std::string dir = out_dir + "/golden_speed";
+  fs::create_directories(dir);
+  b.markdown =
+      "\n## golden against Mesa's llvmpipe (single-threaded), median of 5 each\n\n"
+      "20,000 random opaque 200-pixel triangles (`tools/make_opaque_trace.py 20000`, Q = 0, Z test). golden: "
+      "report.json's `wall_s`, each render in its own process; llvmpipe: clear to `glFinish` through OSMesa "
+      "(`LP_NUM_THREADS=0`). Both from the triangles in memory to the final colour and Z buffers.\n\n"
+      "| workload | pixels | golden wall s | llvmpipe s | golden / llvmpipe | within 2x |\n"
+      "|---|---|---|---|---|---|\n";
+  const std::string trace = dir + "/opaque_20000.trace";
+  if (run_process({"python3", "tools/make_opaque_trace.py", std::to_string(kTriangles), "--out", trace}, true) != 0) {
+    ++b.failures;
+    b.markdown += "| the workload could not be made (tools/make_opaque_trace.py) |\n";
+    return b;
+  }
+  std::vector<double> golden, llvmpipe;
+  nlohmann::json r;
+  for (int i = 0; i < kRuns; ++i) {
+    r = render_in_child(trace, "golden", dir + "/golden", config, {"--quiet"});
+    if (r.is_null()) break;
+    golden.push_back(r.at("wall_s"));
+  }
+  try {
+    const Trace t = read_trace(trace, std::nullopt, params);
+    for (int i = 0; i < kRuns; ++i)
+      llvmpipe.push_back(render_llvmpipe(t.frames.at(0).triangles, params.screen_width, params.screen_height,
+                                         t.frames[0].settings.background, static_cast<uint16_t>(params.depth_clear))
+                             .draw_s);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench: llvmpipe: %s\n", e.what());
+    llvmpipe.clear();
+  }
+  if (r.is_null() || llvmpipe.empty()) {
+    ++b.failures;
+    b.markdown += r.is_null() ? "| golden's render failed |\n" : "| llvmpipe failed |\n";
+    return b;
+  }
+  const double g = median(golden), l = median(llvmpipe), ratio = l > 0 ? g / l : 0;
+  const double pixels = r.at("pixels_generated").get<double>();
+  b.rows.push_back({{"workload", "20000 random opaque 200-px triangles"}, {"triangles", kTriangles},
+                    {"pixels_generated", pixels}, {"golden_wall_s", g}, {"llvmpipe_s", l}, {"ratio", ratio},
+                    {"within_2x", ratio > 0 && ratio <= kWithin}});
+  char line[256];
+  std::snprintf(line, sizeof line, "| %d random opaque 200-px triangles | %.0f | %.3f | %.3f | %.1fx | %s |\n", kTriangles,
+                pixels, g, l, ratio, ratio > 0 && ratio <= kWithin ? "yes" : "no");
+  b.markdown += line;
+  std::fputs(line, stdout);
+  std::fflush(stdout);
+  return b;
+}
+
+}  // namespace girtd

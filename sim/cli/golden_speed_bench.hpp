@@ -1,0 +1,27 @@
+// golden against Mesa's llvmpipe (`girtd bench --speed`; issue "Simulator
+// speed": golden within 2x of single-threaded llvmpipe): 20,000 random
+// opaque 200-pixel triangles (tools/make_opaque_trace.py, Q = 0, Z test),
+// golden's report.json `wall_s` (median of 5 renders, each in its own
+// process) against llvmpipe's clear-to-glFinish time on the same triangles
+// (sim/accuracy/llvmpipe_render.*, median of 5). Both count the triangles in
+// memory to the final colour and Z buffers, the clear included.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/config_loader.hpp"
+#include "config/params.hpp"
+
+namespace girtd {
+
+struct GoldenSpeedBench {
+  std::string markdown;
+  nlohmann::json rows = nlohmann::json::array();
+  int failures = 0;  // the workload, a render or llvmpipe failed
+};
+
+GoldenSpeedBench run_golden_speed_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir);
+
+}  // namespace girtd
