@@ -1,5 +1,6 @@
 #include "cli/child_render.hpp"
 
+#include <cstdio>
 #include <fstream>
 
 #include "io/subprocess.hpp"
@@ -12,9 +13,17 @@ nlohmann::json render_in_child(const std::string& input, const std::string& back
   std::vector<std::string> args = {self_executable(), "render", input, "--backend", backend, "--out", dir, "--quiet"};
   args.insert(args.end(), extra.begin(), extra.end());
   for (const std::string& a : config_args(config)) args.push_back(a);
-  const int rc = log.empty() ? run_process(args, false) : run_process_logged(args, log);
+  // Its warnings (a bench renders the same input many times) go to a log
+  // beside its folder unless the caller keeps one; a failure says where.
+  const std::string to = log.empty() ? dir + ".log" : log;
+  const int rc = run_process_logged(args, to);
   if (exit_code) *exit_code = rc;
-  if (rc != 0) return nullptr;
+  if (rc != 0) {
+    if (log.empty())
+      std::fprintf(stderr, "girtd: the render of %s on %s failed (exit %d); its output: %s\n", input.c_str(),
+                   backend.c_str(), rc, to.c_str());
+    return nullptr;
+  }
   std::ifstream in(dir + "/report.json");
   return nlohmann::json::parse(in);
 }

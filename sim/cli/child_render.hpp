@@ -11,7 +11,8 @@
 
 namespace girtd {
 
-// `log`: the child's stdout and stderr go there ("" keeps ours);
+// `log`: the child's stdout and stderr are appended there ("": to DIR.log,
+// and a failure is reported on our stderr with that path);
 // `exit_code`: the child's (-1: killed by a signal, or not started).
 nlohmann::json render_in_child(const std::string& input, const std::string& backend, const std::string& dir,
                                const ConfigFiles& config, const std::vector<std::string>& extra = {},
