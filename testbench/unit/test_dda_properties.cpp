@@ -122,26 +122,41 @@ TEST_CASE("DDA emits every inside lattice pixel exactly once and nothing else", 
   CHECK(total_pixels > 1000000);  // the sample reaches large triangles
 }
 
-// report.html's DDA-waste map keeps each row of a triangle as one run, its
-// lowest and highest x (sim/backends/screen_maps.hpp): that holds because the
-// DDA emits a row once, as one streak of neighbours (RIGHT from the row's
-// first pixel, then LEFT from beside it; or RUN one way), rows going down.
-TEST_CASE("DDA emits each row of a triangle once, as one contiguous streak", "[dda][property]") {
+namespace {
+
+// `count` random triangles prepared for the DDA, with Q 0..2, the X/Y compare
+// pipelined or not and the walk fixed or as written (DDApix): `check(p, d)`
+// for each that the preparer takes.
+template <typename Check>
+void for_random_walks(int count, uint32_t seed, Check&& check) {
   Params p = Params::defaults();
-  std::mt19937 rng(20261202);
+  std::mt19937 rng(seed);
   const double qs[4] = {0, 0.5, 1, 2};
-  uint64_t rows = 0;
-  for (int n = 0; n < 1500; ++n) {
+  for (int n = 0; n < count; ++n) {
     p.xy_compare_pipelined = (n % 2) == 1;
-    p.walk_fix = (n % 3) != 0;  // also DDApix as written
+    p.walk_fix = (n % 3) != 0;
     FrameSettings f;
     f.q = qs[rng() % 4];
     const Triangle t = random_triangle(rng, 1024);
     DdaParams d;
     if (DdaPreparer(p).prepare(t, f, d) != PrepareResult::kReady) continue;
+    INFO("triangle " << n << " q " << f.q << " pipelined compare " << p.xy_compare_pipelined << " walk_fix "
+                     << p.walk_fix);
+    check(p, d);
+  }
+}
+
+}  // namespace
+
+// report.html's DDA-waste map keeps each row of a triangle as one run, its
+// lowest and highest x (sim/backends/screen_maps.hpp): that holds because the
+// DDA emits a row once, as one streak of neighbours (RIGHT from the row's
+// first pixel, then LEFT from beside it; or RUN one way), rows going down.
+TEST_CASE("DDA emits each row of a triangle once, as one contiguous streak", "[dda][property]") {
+  uint64_t rows = 0;
+  for_random_walks(1500, 20261202, [&](const Params& p, const DdaParams& d) {
     std::vector<std::pair<int, int>> px;  // (y, x) in emission order
     DdaEngine(p).run(d, [&](const DdaEmit& e) { px.emplace_back(e.pixel.y, e.pixel.x); });
-    INFO("triangle " << n << " q " << f.q << " walk_fix " << p.walk_fix);
     for (size_t i = 0; i < px.size();) {
       size_t j = i;
       std::set<int> xs;
@@ -152,7 +167,7 @@ TEST_CASE("DDA emits each row of a triangle once, as one contiguous streak", "[d
       ++rows;
       i = j;
     }
-  }
+  });
   CHECK(rows > 80000);
 }
 
@@ -160,17 +175,8 @@ TEST_CASE("DDA emits each row of a triangle once, as one contiguous streak", "[d
 // themselves: painted are exactly the pixels emitted, each with the share of
 // wasted clocks worked out here.
 TEST_CASE("the DDA-waste map paints exactly the pixels the DDA emitted", "[dda][property][report]") {
-  Params p = Params::defaults();
-  std::mt19937 rng(2026120202);
-  const double qs[4] = {0, 0.5, 1, 2};
   int checked = 0;
-  for (int n = 0; n < 300; ++n) {
-    p.walk_fix = (n % 3) != 0;
-    FrameSettings f;
-    f.q = qs[rng() % 4];
-    const Triangle t = random_triangle(rng, 1024);
-    DdaParams d;
-    if (DdaPreparer(p).prepare(t, f, d) != PrepareResult::kReady) continue;
+  for_random_walks(300, 2026120202, [&](const Params& p, const DdaParams& d) {
     ScreenMapRecorder rec(p);
     rec.begin_frame();
     std::set<std::pair<int, int>> emitted;
@@ -189,10 +195,9 @@ TEST_CASE("the DDA-waste map paints exactly the pixels the DDA emitted", "[dda][
         painted.insert({x, y});
         REQUIRE(v == waste);
       }
-    INFO("triangle " << n << " q " << f.q << " walk_fix " << p.walk_fix);
     REQUIRE(painted == emitted);
     ++checked;
-  }
+  });
   CHECK(checked > 250);
 }
 
