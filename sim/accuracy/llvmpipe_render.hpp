@@ -17,7 +17,8 @@ namespace girtd {
 struct LlvmpipeFrame {
   RgbImage rgb;              // GIRTD orientation (row 0 at the top)
   std::vector<uint16_t> z;   // depth units, z_clear where nothing was drawn
-  double draw_s = 0;         // clear to glFinish: the triangles in memory to the final buffers
+  double draw_s = 0;         // clear to glFinish: the triangles in memory to the final buffers (a second
+                             // pass: the first, untimed, compiled llvmpipe's shaders)
 };
 
 // Depth 0..65535 maps onto GL's 0..1; the buffer is cleared to z_clear

@@ -1,6 +1,7 @@
 #include "cli/child_render.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include "io/subprocess.hpp"
@@ -16,6 +17,8 @@ nlohmann::json render_in_child(const std::string& input, const std::string& back
   // Its warnings (a bench renders the same input many times) go to a log
   // beside its folder unless the caller keeps one; a failure says where.
   const std::string to = log.empty() ? dir + ".log" : log;
+  std::error_code ignored;  // the child makes DIR; its log's folder must be there before it starts
+  std::filesystem::create_directories(std::filesystem::path(to).parent_path(), ignored);
   const int rc = run_process_logged(args, to);
   if (exit_code) *exit_code = rc;
   if (rc != 0) {

@@ -96,7 +96,7 @@ PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config
     const nlohmann::json a = render_in_child(input, "approx", out_dir + "/pipeline/" + stem + "/approx", config);
     const nlohmann::json r = render_in_child(input, "rtl", out_dir + "/pipeline/" + stem + "/rtl", config);
     if (g.is_null() || a.is_null() || r.is_null()) {
-      b.markdown += "| " + input + " | render failed (see above) |\n";
+      b.markdown += "| " + input + " | render failed (the renders' logs: " + out_dir + "/pipeline/" + stem + "/*.log) |\n";
       ++b.failures;
       continue;
     }
