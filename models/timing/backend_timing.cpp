@@ -125,7 +125,7 @@ void BackendTimingModel::pixel(const TimedPixel& p) {
   if (!stepped_) {
     const uint64_t count_after = fifo_count_at(at + 1);
     t_.fifo_max = std::max<int>(t_.fifo_max, int(count_after));
-    if (at >= watch_at_ && watch_) [[unlikely]] {
+    if (at >= watch_at_) [[unlikely]] {
       watch_at_ = watch_(pushes_.size() > 1 ? recent_push(1) : FifoPush{0, 0}, watch_peak_, {at, count_after});
       watch_peak_ = 0;
     }

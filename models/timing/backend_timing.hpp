@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -85,7 +86,10 @@ class BackendTimingModel {
   // push's not included). First call: on the first push. Not with the
   // stepped memory side. fifo_watch() is the same for the last push, for the end.
   using FifoWatch = std::function<uint64_t(FifoPush before, uint64_t peak, FifoPush now)>;
-  void watch_fifo(FifoWatch f) { watch_ = std::move(f); }
+  void watch_fifo(FifoWatch f) {
+    watch_ = std::move(f);
+    watch_at_ = 0;
+  }
   struct FifoWatchState {
     std::optional<FifoPush> last;
     uint64_t peak;
@@ -129,7 +133,8 @@ class BackendTimingModel {
   TickWindow pops_;  // pop ticks of pixels possibly still in the FIFO
   TickWindow pushes_;
   FifoWatch watch_;
-  uint64_t watch_at_ = 0, watch_peak_ = 0;  // the next push tick watch_ hears of, the peak until then
+  // The next push tick watch_ hears of (none unwatched: no test per pixel), the peak until then.
+  uint64_t watch_at_ = std::numeric_limits<uint64_t>::max(), watch_peak_ = 0;
   uint64_t tri_clock0_ = 0, tri_wait_ticks_ = 0;  // the triangle being streamed
   std::optional<uint64_t> tri_last_push_;
   BackendTiming t_;
