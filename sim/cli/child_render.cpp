@@ -31,4 +31,15 @@ nlohmann::json render_in_child(const std::string& input, const std::string& back
   return nlohmann::json::parse(in);
 }
 
+RepeatedRender render_repeatedly(int runs, const std::string& input, const std::string& backend, const std::string& dir,
+                                 const ConfigFiles& config) {
+  RepeatedRender r;
+  for (int i = 0; i < runs; ++i) {
+    r.last = render_in_child(input, backend, dir, config);
+    if (r.last.is_null()) break;
+    r.walls.push_back(r.last.at("wall_s"));
+  }
+  return r;
+}
+
 }  // namespace girtd

@@ -18,4 +18,14 @@ nlohmann::json render_in_child(const std::string& input, const std::string& back
                                const ConfigFiles& config, const std::vector<std::string>& extra = {},
                                const std::string& log = "", int* exit_code = nullptr);
 
+// `runs` renders of the same input, each in its own process (the speed
+// benches' medians): their wall_s, and the last report, null when one failed
+// (the runs stop there).
+struct RepeatedRender {
+  std::vector<double> walls;
+  nlohmann::json last;
+};
+RepeatedRender render_repeatedly(int runs, const std::string& input, const std::string& backend, const std::string& dir,
+                                 const ConfigFiles& config);
+
 }  // namespace girtd

@@ -40,13 +40,8 @@ GoldenSpeedBench run_golden_speed_bench(const Params& params, const ConfigFiles&
     b.markdown += "| the workload could not be made (tools/make_opaque_trace.py) |\n";
     return b;
   }
-  std::vector<double> golden, llvmpipe;
-  nlohmann::json r;
-  for (int i = 0; i < kRuns; ++i) {
-    r = render_in_child(trace, "golden", dir + "/golden", config);
-    if (r.is_null()) break;
-    golden.push_back(r.at("wall_s"));
-  }
+  const auto [golden, r] = render_repeatedly(kRuns, trace, "golden", dir + "/golden", config);
+  std::vector<double> llvmpipe;
   try {
     const Trace t = read_trace(trace, std::nullopt, params);
     for (int i = 0; i < kRuns; ++i)
@@ -63,13 +58,14 @@ GoldenSpeedBench run_golden_speed_bench(const Params& params, const ConfigFiles&
     return b;
   }
   const double g = median(golden), l = median(llvmpipe), ratio = l > 0 ? g / l : 0;
+  const bool within = ratio > 0 && ratio <= kWithin;
   const double pixels = r.at("pixels_generated").get<double>();
   b.rows.push_back({{"workload", "20000 random opaque 200-px triangles"}, {"triangles", kTriangles},
                     {"pixels_generated", pixels}, {"golden_wall_s", g}, {"llvmpipe_s", l}, {"ratio", ratio},
-                    {"within_2x", ratio > 0 && ratio <= kWithin}});
+                    {"within_2x", within}});
   char line[256];
   std::snprintf(line, sizeof line, "| %d random opaque 200-px triangles | %.0f | %.3f | %.3f | %.1fx | %s |\n", kTriangles,
-                pixels, g, l, ratio, ratio > 0 && ratio <= kWithin ? "yes" : "no");
+                pixels, g, l, ratio, within ? "yes" : "no");
   b.markdown += line;
   std::fputs(line, stdout);
   std::fflush(stdout);

@@ -57,13 +57,7 @@ RtlSpeedBench run_rtl_speed_bench(const Params& params, const ConfigFiles& confi
       const auto [clocks, wall] = dda_alone(params, dump);
       if (wall > 0) best_alone = std::max(best_alone, double(clocks) / wall);
     }
-    std::vector<double> walls;
-    nlohmann::json r;
-    for (int i = 0; i < kRuns; ++i) {
-      r = render_in_child(input, "rtl", base + "-rtl", config);
-      if (r.is_null()) break;
-      walls.push_back(r.at("wall_s"));
-    }
+    const auto [walls, r] = render_repeatedly(kRuns, input, "rtl", base + "-rtl", config);
     if (r.is_null()) {
       ++b.failures;
       b.markdown += std::string("| ") + input + " | render failed |\n";
