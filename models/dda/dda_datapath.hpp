@@ -22,6 +22,7 @@ struct DdaRegisters {
 
 class DdaDatapath {
  public:
+  static constexpr bool kExact = false;  // adders wrap: no spans
   // `shadow`: keep the wrap detector's registers; false only where no EP can
   // wrap (may_wrap), and then exact() is pix().
   DdaDatapath(const Params& p, const DdaParams& in, bool shadow = true)
@@ -103,6 +104,48 @@ inline bool may_wrap(const Params& p, const DdaParams& in) {
   }
   return false;
 }
+
+// Whether a triangle can use ExactDatapath: no EP can wrap (may_wrap), and
+// neither can X or Y over the pixels the DDA can visit.
+inline bool exact_steps(const Params& p, const DdaParams& in) {
+  const int64_t lo = -(int64_t{1} << (p.xy_bits - 1)), hi = (int64_t{1} << (p.xy_bits - 1)) - 1;
+  auto fits = [&](int64_t v) { return v >= lo && v <= hi; };
+  return fits(std::min(in.x0, in.xmin)) && fits(std::max(in.x0, in.xmax)) && fits(in.y0) &&
+         fits(std::max(in.y0, in.ymax + 1)) && !may_wrap(p, in);
+}
+
+// DdaDatapath for a triangle where nothing can wrap (exact_steps): the same
+// registers with plain adds, and no wrap detector (exact() is pix()).
+class ExactDatapath {
+ public:
+  static constexpr bool kExact = true;
+  ExactDatapath(const Params& p, const DdaParams& in) {
+    pix_.x = in.x0;
+    pix_.y = in.y0;
+    for (int i = 0; i < kEpCount; ++i) {
+      pix_.v[i] = wrap(in.ep[i].v, DdaDatapath::format_of(p, i));
+      dx_[i] = in.ep[i].dx;
+      dy_[i] = in.ep[i].dy;
+    }
+  }
+  void step_x(int s) { step_x_times(s, 1); }
+  void step_x_times(int s, int64_t n) {
+    pix_.x += static_cast<int>(s * n);
+    for (int i = 0; i < kEpCount; ++i) pix_.v[i] += s * n * dx_[i];
+  }
+  void step_y() {
+    ++pix_.y;
+    for (int i = 0; i < kEpCount; ++i) pix_.v[i] += dy_[i];
+  }
+  const DdaRegisters& exact() const { return pix_; }
+  void save() { aux_ = pix_; }
+  void restore() { pix_ = aux_; }
+  const DdaRegisters& pix() const { return pix_; }
+
+ private:
+  DdaRegisters pix_, aux_;
+  std::array<int64_t, kEpCount> dx_{}, dy_{};
+};
 
 // An output stage (fig. 4.20) does not carry the EP's integer part out as
 // it is: clipped to 0..2^out_bits - 1, or cut to its low bits.

@@ -43,6 +43,9 @@ struct DdaRunStats {
   // Simulator, not hardware: runs without the wrap detector's registers
   // (skip_unreachable_wraps: nothing could wrap). Not in report.json's counts.
   uint64_t undetected = 0;
+  // Simulator, not hardware: clocks the span path computed as whole spans
+  // (compute_spans). Not in report.json's counts.
+  uint64_t span_clocks = 0;
   uint64_t wasted() const { return cycles - emitted; }
 };
 
@@ -55,12 +58,23 @@ class DdaEngine {
   // Simulator pruning: no wrap-detector registers for a triangle that cannot
   // wrap (may_wrap); its numerics are the same.
   void skip_unreachable_wraps(bool skip) { skip_unreachable_wraps_ = skip; }
+  // Simulator pruning: a triangle that cannot wrap (exact_steps) runs with
+  // plain adds and each emitting run computed as one span
+  // (dda_state_machine.hpp); same pixels, clocks and counts. Not with a probe.
+  void compute_spans(bool on) { spans_ = on; }
 
   DdaRunStats run(const DdaParams& in, const PixelSink& sink, const ClockProbe& probe = {}) const;
+  // The same with the sink inlined: include dda/dda_state_machine.hpp.
+  template <typename Sink>
+  DdaRunStats run_inline(const DdaParams& in, const Sink& sink) const;
 
  private:
+  template <typename Sink, typename Probe>
+  DdaRunStats run_any(const DdaParams& in, const Sink& sink, const Probe& probe) const;
+
   const Params& params_;
   bool skip_unreachable_wraps_ = false;
+  bool spans_ = false;
 };
 
 }  // namespace girtd

@@ -16,7 +16,8 @@ namespace girtd {
 class NormUnit {
  public:
   NormUnit(const FixFormat& d_format, int norm_frac_bits, double q);
-  bool inside(int64_t d) const { return q_zero_ ? d >= 0 : d > -q_raw_; }
+  bool inside(int64_t d) const { return d >= lowest_inside(); }
+  int64_t lowest_inside() const { return q_zero_ ? 0 : 1 - q_raw_; }
   int norm(int64_t d) const;  // 0..256
   int64_t q_raw() const { return q_raw_; }
 

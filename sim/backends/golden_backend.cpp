@@ -1,6 +1,8 @@
 #include "backends/golden_backend.hpp"
 
 #include "common/input_error.hpp"
+#include "dda/dda_state_machine.hpp"
+#include "had/had_sink.hpp"
 #include "thesis/thesis_preparer.hpp"
 
 namespace girtd {
@@ -13,6 +15,7 @@ void accumulate(DdaRunStats& total, const DdaRunStats& one) {
   for (size_t i = 0; i < total.per_state.size(); ++i) total.per_state[i] += one.per_state[i];
   total.ended_at_limit = total.ended_at_limit || one.ended_at_limit;
   total.undetected += one.undetected;
+  total.span_clocks += one.span_clocks;
 }
 
 void GoldenBackend::begin(const Trace& trace) {
@@ -23,13 +26,15 @@ void GoldenBackend::begin(const Trace& trace) {
 
 namespace {
 
+DdaRunStats run_sequencer(const DdaPix& seq, const DdaParams& p, const HadSink& sink) { return seq.run(p, sink); }
+DdaRunStats run_sequencer(const DdaEngine& seq, const DdaParams& p, const HadSink& sink) {
+  return seq.run_inline(p, sink);
+}
+
 // One triangle through a sequencer (the hardware DDA or DDApix) into the HAD.
 template <typename Sequencer>
 void traverse(const Sequencer& seq, const DdaParams& p, Had& had, RunStats& stats) {
-  const DdaRunStats one = seq.run(p, [&](const DdaEmit& e) {
-    ++stats.pixels_generated;
-    had.update(e.pixel, p.layer, e.covered);
-  });
+  const DdaRunStats one = run_sequencer(seq, p, HadSink{had, stats.pixels_generated, p.layer});
   if (!stats.dda) stats.dda = DdaRunStats{};
   accumulate(*stats.dda, one);
   ++stats.triangles_drawn;

@@ -18,7 +18,10 @@ class GoldenBackend : public Backend {
   void begin(const Trace& trace) override;
   void draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) override;
   void finish(RunStats& stats) const override;
-  void prune(const PrunePlan& plan) override { engine_.skip_unreachable_wraps(plan.unreachable_wraps); }
+  void prune(const PrunePlan& plan) override {
+    engine_.skip_unreachable_wraps(plan.unreachable_wraps);
+    engine_.compute_spans(plan.dda_spans);
+  }
   bool tap_dda(std::function<void(const DdaParams&)> tap) override {
     tap_ = std::move(tap);
     return true;

@@ -7,6 +7,7 @@ PrunePlan plan_pruning(const Trace& input, bool enabled) {
   if (!enabled) return plan;
   plan.lighting_out_of_view = input.level == TraceLevel::kPolygon;
   plan.unreachable_wraps = true;
+  plan.dda_spans = true;
   return plan;
 }
 
@@ -22,6 +23,11 @@ std::vector<LeftOut> left_out(const RunStats& s) {
                                         " triangles ran without the wrap detector's registers: their EP values stay "
                                         "within every format over the pixels the DDA can visit, so they cannot wrap "
                                         "(models/dda/dda_datapath.hpp may_wrap)"});
+  if (s.dda && s.dda->span_clocks > 0)
+    out.push_back({"DDA clocks", std::to_string(s.dda->span_clocks) + " of " + std::to_string(s.dda->cycles) +
+                                     " DDA clocks were computed as whole spans, not one by one: in a triangle "
+                                     "that cannot wrap, a run's registers are linear in X, so its length and "
+                                     "clipped outputs follow from its ends (models/dda/dda_span.hpp)"});
   return out;
 }
 

@@ -23,6 +23,9 @@ struct PrunePlan {
   // registers for triangles whose EP values provably stay within their
   // formats (models/dda may_wrap). rtl's detector is hardware: it always runs.
   bool unreachable_wraps = false;
+  // DDA (the same engine): such a triangle's emitting runs computed as
+  // whole spans, not clock by clock (models/dda/dda_span.hpp).
+  bool dda_spans = false;
 };
 
 // `enabled`: false for --no-prune (nothing is skipped).

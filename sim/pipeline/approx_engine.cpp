@@ -9,6 +9,7 @@
 #include "backends/backend_engine.hpp"
 #include "backends/model_series.hpp"
 #include "backends/series_switch.hpp"
+#include "dda/dda_state_machine.hpp"
 #include "timing/backend_timing.hpp"
 
 namespace girtd {
@@ -22,7 +23,10 @@ class ApproxEngine : public BackendEngine {
     if (sample_rate) sampler_.emplace(*sample_rate);
     if (record_series()) series_.emplace(p, timing_);
   }
-  void prune(const PrunePlan& plan) override { dda_.skip_unreachable_wraps(plan.unreachable_wraps); }
+  void prune(const PrunePlan& plan) override {
+    dda_.skip_unreachable_wraps(plan.unreachable_wraps);
+    dda_.compute_spans(plan.dda_spans);
+  }
   uint64_t ready_tick() override { return timing_.dda_ready_tick(); }
   void idle_until(uint64_t tick) override { timing_.idle_until(tick); }
   void begin_frame(const FrameSettings& s) override {
@@ -51,7 +55,7 @@ class ApproxEngine : public BackendEngine {
   }
   void simulate(const DdaParams& d) {
     timing_.begin_triangle();
-    const DdaRunStats st = dda_.run(d, [&](const DdaEmit& e) {
+    const DdaRunStats st = dda_.run_inline(d, [&](const DdaEmit& e) {
       timing_.pixel({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel, d.layer, e.covered)});
       if (series_) series_->pixel(e.pixel.x, e.pixel.y);
     });

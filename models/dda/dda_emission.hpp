@@ -1,0 +1,122 @@
+// What the DDA makes of its registers at one pixel, for one triangle: the
+// edge tests (Norm units, §4.2.5), the pixel it emits (output stages of
+// fig. 4.20 and nf, §4.2.7) and whether an output clipped. Shared by the
+// clocked path and the span path of the state machine.
+#pragma once
+
+#include <algorithm>
+#include <array>
+
+#include "common/fixed_point.hpp"
+#include "config/params.hpp"
+#include "dda/dda_datapath.hpp"
+#include "dda/dda_engine.hpp"
+#include "dda/nf_unit.hpp"
+
+namespace girtd {
+
+inline constexpr std::array<int, 5> kOutputEps = {kEpR, kEpG, kEpB, kEpT, kEpZ};
+
+class DdaEmission {
+ public:
+  DdaEmission(const Params& p, const DdaParams& in)
+      : params_(p),
+        in_(in),
+        // One Norm unit per edge: an interior edge's (edge flags) has no fringe.
+        norm_{unit(p, in, 0), unit(p, in, 1), unit(p, in, 2)} {
+    for (int i = 0; i < kEpCount; ++i) format_[i] = &DdaDatapath::format_of(p, i);
+    if (in.q > 0) soft_edges_ = ~in.hard_edges & 7;
+    for (int e = 0; e < 3; ++e) lowest_inside_[e] = norm_[e].lowest_inside();
+    // The raw values an output stage passes unchanged (T: and its 1.0, one past the top, when it saturates).
+    for (int i : kOutputEps) {
+      const FixFormat& f = *format_[i];
+      const int64_t past_top = (int64_t{1} << f.out_bits) + (i == kEpT && f.saturates() ? 1 : 0);
+      plain_hi_[i] = (past_top << f.frac_bits) - 1;
+    }
+  }
+
+  const NormUnit& norm(int edge) const { return norm_[edge]; }
+  // The Norm unit's inside test: D at least the lowest inside value (NormUnit::inside).
+  int64_t lowest_inside(int ep) const { return lowest_inside_[ep - kEpD1]; }
+  bool edge_inside(const DdaRegisters& r, int ep) const { return r.v[ep] >= lowest_inside(ep); }
+  bool d_inside(const DdaRegisters& r) const {
+    return edge_inside(r, kEpD1) && edge_inside(r, kEpD2) && edge_inside(r, kEpD3);
+  }
+  const FixFormat& format(int ep) const { return *format_[ep]; }
+
+  // An output stage clipped this value (counted per pixel emitted). T's 1.0
+  // is 256, carried out as 255 by design (models/dda/README.md): not a clip.
+  bool counts_saturation(int ep, int64_t raw) const {
+    const FixFormat& f = *format_[ep];
+    const bool t_one = ep == kEpT && (raw >> f.frac_bits) == 256;
+    return !t_one && output_saturates(raw, f);
+  }
+
+  DdaEmit emit(const DdaRegisters& r, uint64_t cycle) const {
+    DdaEmit e;
+    e.raw = r.v;
+    e.cycle = cycle;
+    const int t = t_operand(saturate_output(r.v[kEpT], params_.ep_t));
+    const int n1 = norm_[0].norm(r.v[kEpD1]), n2 = norm_[1].norm(r.v[kEpD2]), n3 = norm_[2].norm(r.v[kEpD3]);
+    e.pixel = output_pixel(r, params_, compute_nf(n1, n2, n3, t, params_.prom_frac_bits));
+    // Covered: inside every hard edge, strictly inside every soft one (a
+    // pixel on a silhouette is on the boundary, not a triangle's own).
+    e.covered = n1 == kNfOne && n2 == kNfOne && n3 == kNfOne;
+    for (int i = 0; i < 3; ++i)
+      if (in_.q > 0 && !((in_.hard_edges >> i) & 1) && r.v[kEpD1 + i] == 0) e.covered = false;
+    return e;
+  }
+
+  // Registers of an inside pixel where emit() reduces to shifts: no output
+  // clips, and every edge with a fringe has D >= 0 (the others do, being
+  // inside), so each Norm is 1 and nf is T (§4.2.7). Each part holds on an
+  // interval of a register's values: where it holds at both ends of a
+  // span of a linear register, it holds all along.
+  bool plain(const DdaRegisters& r) const {
+    for (int i : kOutputEps)
+      if (r.v[i] < plain_lo_[i] || r.v[i] > plain_hi_[i]) return false;
+    return !(((soft_edges_ & 1) && r.v[kEpD1] < 0) || ((soft_edges_ & 2) && r.v[kEpD2] < 0) ||
+             ((soft_edges_ & 4) && r.v[kEpD3] < 0));
+  }
+  // What emit_plain needs, by value: a copy the compiler can keep in
+  // registers while the sink writes memory.
+  struct PlainFormat {
+    int colour_frac, z_frac, t_frac;  // R, G and B share one format (ep.color)
+    int64_t t_top;
+    unsigned soft_edges;
+  };
+  PlainFormat plain_format() const {
+    return {format_[kEpR]->frac_bits, format_[kEpZ]->frac_bits, format_[kEpT]->frac_bits,
+            (int64_t{1} << format_[kEpT]->out_bits) - 1, soft_edges_};
+  }
+  // emit() where plain(r).
+  static DdaEmit emit_plain(const PlainFormat& f, const DdaRegisters& r, uint64_t cycle) {
+    DdaEmit e;
+    e.raw = r.v;
+    e.cycle = cycle;
+    e.pixel.x = r.x;
+    e.pixel.y = r.y;
+    e.pixel.r = static_cast<uint8_t>(r.v[kEpR] >> f.colour_frac);
+    e.pixel.g = static_cast<uint8_t>(r.v[kEpG] >> f.colour_frac);
+    e.pixel.b = static_cast<uint8_t>(r.v[kEpB] >> f.colour_frac);
+    e.pixel.z = static_cast<uint16_t>(r.v[kEpZ] >> f.z_frac);
+    e.pixel.nf = static_cast<uint16_t>(t_operand(static_cast<int>(std::min(r.v[kEpT] >> f.t_frac, f.t_top))));
+    e.covered = !(((f.soft_edges & 1) && r.v[kEpD1] == 0) || ((f.soft_edges & 2) && r.v[kEpD2] == 0) ||
+                  ((f.soft_edges & 4) && r.v[kEpD3] == 0));
+    return e;
+  }
+
+ private:
+  static NormUnit unit(const Params& p, const DdaParams& in, int edge) {
+    return NormUnit(p.ep_d, p.norm_frac_bits, (in.hard_edges >> edge) & 1 ? 0.0 : in.q);
+  }
+  const Params& params_;
+  const DdaParams& in_;
+  std::array<NormUnit, 3> norm_;
+  std::array<const FixFormat*, kEpCount> format_{};
+  std::array<int64_t, 3> lowest_inside_{};
+  std::array<int64_t, kEpCount> plain_lo_{}, plain_hi_{};  // plain(): 0 .. the top of each output's range
+  unsigned soft_edges_ = 0;  // bit i: D(i+1) has a fringe (Q > 0, not a hard edge): 0 is on its boundary
+};
+
+}  // namespace girtd

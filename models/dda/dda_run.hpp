@@ -1,0 +1,111 @@
+// A span's pixels handed to a sink as one run (the span path,
+// dda_span.hpp). A sink that takes runs says so (kTakesRuns) and has
+// run(source); any other gets DdaEmits one by one. A run source gives
+// size() pixels along row y() from x_first() to x_last(), each from next()
+// as a RunPixel: what the HAD reads, no registers and no clock; and whether
+// every one of them is covered and opaque (covered_opaque()).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <type_traits>
+
+#include "common/types.hpp"
+#include "dda/dda_emission.hpp"
+
+namespace girtd {
+
+struct RunPixel {
+  Pixel pixel;
+  bool covered;
+};
+
+template <typename Sink, typename = void>
+struct TakesRuns : std::false_type {};
+template <typename Sink>
+struct TakesRuns<Sink, std::void_t<decltype(Sink::kTakesRuns)>> : std::bool_constant<Sink::kTakesRuns> {};
+
+// A plain span's pixels (DdaEmission::emit_plain's values), stepping only
+// the registers they read: R, G, B, T, Z, and the edges' only where one
+// has a fringe (kFringe: `covered` reads D = 0). nf is T; where T does not
+// change along the row (kVaryingT false), it is worked out once.
+template <bool kFringe, bool kVaryingT>
+class PlainRun {
+ public:
+  PlainRun(const DdaEmission::PlainFormat& f, const DdaRegisters& r, const std::array<int64_t, kEpCount>& step, int s,
+           int64_t n)
+      : f_(f), x_(r.x), y_(r.y), s_(s), x_last_(r.x + static_cast<int>(s * (n - 1))), n_(n) {
+    for (int i = 0; i < kStepped; ++i) {
+      v_[i] = r.v[i];
+      step_[i] = step[i];
+    }
+    nf_ = nf_of(v_[kEpT]);
+  }
+  int64_t size() const { return n_; }
+  int y() const { return y_; }
+  int x_first() const { return x_; }
+  int x_last() const { return x_last_; }
+  // Every pixel is inside the triangle, and opaque (nf = 1).
+  bool covered_opaque() const { return !kFringe && !kVaryingT && nf_ == kNfOne; }
+  RunPixel next() {
+    RunPixel p;
+    p.pixel.x = x_;
+    p.pixel.y = y_;
+    p.pixel.r = static_cast<uint8_t>(v_[kEpR] >> f_.colour_frac);
+    p.pixel.g = static_cast<uint8_t>(v_[kEpG] >> f_.colour_frac);
+    p.pixel.b = static_cast<uint8_t>(v_[kEpB] >> f_.colour_frac);
+    p.pixel.z = static_cast<uint16_t>(v_[kEpZ] >> f_.z_frac);
+    p.pixel.nf = kVaryingT ? nf_of(v_[kEpT]) : nf_;
+    p.covered = true;
+    if constexpr (kFringe)
+      p.covered = !(((f_.soft_edges & 1) && v_[kEpD1] == 0) || ((f_.soft_edges & 2) && v_[kEpD2] == 0) ||
+                    ((f_.soft_edges & 4) && v_[kEpD3] == 0));
+    x_ += s_;
+    for (int i = 0; i < kStepped; ++i) v_[i] += step_[i];
+    return p;
+  }
+
+ private:
+  static_assert(kEpR == 0 && kEpZ == 4 && kEpD1 == 5, "R..Z then the edges: the stepped prefix");
+  static constexpr int kStepped = kFringe ? kEpCount : kEpZ + 1;
+  uint16_t nf_of(int64_t t) const {
+    return static_cast<uint16_t>(t_operand(static_cast<int>(std::min(t >> f_.t_frac, f_.t_top))));
+  }
+  DdaEmission::PlainFormat f_;
+  int x_, y_, s_, x_last_;
+  int64_t n_;
+  uint16_t nf_ = 0;
+  std::array<int64_t, kStepped> v_{}, step_{};
+};
+
+// Hands a plain span to a run sink through the PlainRun that fits it.
+template <typename Sink>
+void deliver_plain_run(const Sink& sink, const DdaEmission::PlainFormat& f, const DdaRegisters& r,
+                       const std::array<int64_t, kEpCount>& step, int s, int64_t n) {
+  const bool fringe = f.soft_edges != 0, varying_t = step[kEpT] != 0;
+  if (fringe) {
+    if (varying_t) sink.run(PlainRun<true, true>(f, r, step, s, n));
+    else sink.run(PlainRun<true, false>(f, r, step, s, n));
+  } else {
+    if (varying_t) sink.run(PlainRun<false, true>(f, r, step, s, n));
+    else sink.run(PlainRun<false, false>(f, r, step, s, n));
+  }
+}
+
+// One emitted pixel as a run source.
+class OnePixelRun {
+ public:
+  explicit OnePixelRun(const DdaEmit& e) : p_{e.pixel, e.covered} {}
+  int64_t size() const { return 1; }
+  int y() const { return p_.pixel.y; }
+  int x_first() const { return p_.pixel.x; }
+  int x_last() const { return p_.pixel.x; }
+  bool covered_opaque() const { return false; }  // not worth a case of its own
+  RunPixel next() const { return p_; }
+
+ private:
+  RunPixel p_;
+};
+
+}  // namespace girtd
