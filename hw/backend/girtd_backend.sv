@@ -7,6 +7,12 @@
 module girtd_backend (
     input  logic clk_i,
     input  logic rst_ni,
+    // The DDA's clock: clk_i gated by dda_step_o, which the harness reads
+    // with clk_i low and raises together with clk_i (simulation: a Verilated
+    // model then evaluates the DDA only on the ticks it acts on; every DDA
+    // register holds on the others, so this is the clock enable it was).
+    input  logic dda_clk_i,
+    output logic dda_step_o,
     // Timing and options (run-time)
     input  logic [girtd_pkg::DDA_PERIOD_W-1:0] dda_period_ticks_i,
     input  logic [girtd_pkg::TIME_W-1:0]       had_access_ticks_i,
@@ -111,15 +117,27 @@ module girtd_backend (
   logic [girtd_pkg::FIFO_NF_W-1:0] onf;
   logic [girtd_pkg::FIFO_Z_W-1:0] oz;
   logic [girtd_pkg::DDA_STATE_W-1:0] dda_state;
+  // The DDA holds (its enable off, or its output stalled on a full FIFO)
+  // on every tick but those it is clocked on: inside it, never.
+  logic dda_hold, dda_out_stalled, dda_idle_ready, dda_busy, dda_own_still, dda_never_stalled;
+  assign dda_out_stalled = out_valid && fifo_full;
+  assign dda_hold = !dda_en || dda_out_stalled;
+  assign dda_step_o = !rst_ni || !dda_hold;
+  assign in_ready_o = dda_idle_ready && !dda_hold;
+  assign dda_active = dda_busy && !dda_hold;
+  assign dda_stall = dda_en && dda_out_stalled && dda_busy;
+  assign dda_still = dda_out_stalled || dda_own_still;
+  logic unused_dda_stall;  // inside, the DDA is never held: its own stall output is always 0
+  assign unused_dda_stall = dda_never_stalled;
   dda u_dda (
-      .clk_i, .rst_ni, .en_i(dda_en), .walk_fix_i(walk_fix_q), .pipelined_compare_i(pipelined_compare_q), .in_valid_i,
-      .in_ready_o,
+      .clk_i(dda_clk_i), .rst_ni, .en_i(1'b1), .walk_fix_i(walk_fix_q), .pipelined_compare_i(pipelined_compare_q),
+      .in_valid_i, .in_ready_o(dda_idle_ready),
       .x0_i, .y0_i, .xmin_i, .xmax_i, .ymax_i, .q_zero_i, .q_k_i, .hard_edges_i, .clamped_i,
       .r_i, .r_dx_i, .r_dy_i, .g_i, .g_dx_i, .g_dy_i, .b_i, .b_dx_i, .b_dy_i, .t_i, .t_dx_i, .t_dy_i,
       .z_i, .z_dx_i, .z_dy_i, .d1_i, .d1_dx_i, .d1_dy_i, .d2_i, .d2_dx_i, .d2_dy_i, .d3_i, .d3_dx_i, .d3_dy_i,
-      .out_valid_o(out_valid), .out_ready_i(!fifo_full), .out_x_o(ox), .out_y_o(oy), .out_r_o(orr),
-      .out_g_o(og), .out_b_o(ob), .out_nf_o(onf), .out_z_o(oz), .active_o(dda_active), .stall_o(dda_stall),
-      .state_o(dda_state), .still_o(dda_still), .wraps_o, .clips_o, .triangles_affected_o, .first_affected_o);
+      .out_valid_o(out_valid), .out_ready_i(1'b1), .out_x_o(ox), .out_y_o(oy), .out_r_o(orr),
+      .out_g_o(og), .out_b_o(ob), .out_nf_o(onf), .out_z_o(oz), .active_o(dda_busy), .stall_o(dda_never_stalled),
+      .state_o(dda_state), .still_o(dda_own_still), .wraps_o, .clips_o, .triangles_affected_o, .first_affected_o);
 
   logic push;
   logic [girtd_pkg::FIFO_W-1:0] fifo_data;

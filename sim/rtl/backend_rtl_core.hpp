@@ -67,6 +67,7 @@ class BackendRtlCore final : public BackendRtl {
     t.in_valid_i = 0;
     t.clear_i = t.flush_i = t.swap_i = 0;
     t.rst_ni = 0;
+    t.dda_clk_i = 0;
     t.ticks_i = 1;
     for (int i = 0; i < 4; ++i) tick(kOneTick);
     t.rst_ni = 1;
@@ -95,12 +96,11 @@ class BackendRtlCore final : public BackendRtl {
     load_dda_ports(t, d, params_);
     t.in_valid_i = 1;
     for (uint64_t guard = 0;; ++guard) {
-      t.clk_i = 0;
-      t.eval();
+      clock_low();
       const bool taken = t.in_ready_o;  // ready only on a DDA clock: the load happens at this edge
       if (taken && maps_) maps_->loaded(t.dda_clocks_o, dda_pixels_in_flight());
       // The RTL's quiet_o cannot see the offer: an enabled tick is never warped over here.
-      tick(ticks_ % period_ == 0 ? kOneTick : UINT64_MAX);
+      tick(ticks_ % period_ == 0 ? kOneTick : UINT64_MAX, kLowSettled);
       if (taken) break;
       if (guard > (uint64_t{1} << 28)) throw std::logic_error("RTL DDA did not take a parameter set within 2^28 ticks");
     }
@@ -143,12 +143,13 @@ class BackendRtlCore final : public BackendRtl {
     const bool may_skip = !on_tick_ && steal_period_ == 0;
     while (ticks_ < target) {
       if (may_skip && target - ticks_ >= period_) {
-        t.clk_i = 0;
-        t.eval();
+        clock_low();
         if (t.idle_o) {
           ticks_ += (target - ticks_) / period_ * period_;
           continue;
         }
+        tick(target - ticks_, kLowSettled);
+        continue;
       }
       tick(target - ticks_);
     }
@@ -232,11 +233,10 @@ class BackendRtlCore final : public BackendRtl {
   void clock_until(Done done, const char* what) {
     Model& t = *top_;
     for (uint64_t guard = 0;; ++guard) {
-      t.clk_i = 0;
-      t.eval();
+      clock_low();
       if (done(t)) return;
       if (guard > (uint64_t{1} << 28)) throw std::logic_error(std::string(what) + " within 2^28 ticks (a deadlock)");
-      tick();
+      tick(UINT64_MAX, kLowSettled);
     }
   }
 
@@ -245,10 +245,17 @@ class BackendRtlCore final : public BackendRtl {
   // warp, hw/backend). Ticks that carry a control pulse, and every tick
   // while a hook watches (waveforms), are single.
   static constexpr uint64_t kOneTick = 1;
-  void tick(uint64_t most = UINT64_MAX) {
+  static constexpr bool kLowSettled = true;  // the caller has just evaluated the clock low, inputs unchanged since
+  // Both clocks low (the DDA's rises only with clk_i, on dda_step_o).
+  void clock_low() {
     Model& t = *top_;
     t.clk_i = 0;
+    t.dda_clk_i = 0;
     t.eval();
+  }
+  void tick(uint64_t most = UINT64_MAX, bool low_settled = false) {
+    Model& t = *top_;
+    if (!low_settled) clock_low();
     if (t.dda_active_o && t.dda_state_o < state_clocks_.size()) ++state_clocks_[t.dda_state_o];
     BackendRtl::TickProbe probe{};
     if (on_tick_) {
@@ -260,6 +267,7 @@ class BackendRtlCore final : public BackendRtl {
     if (span > period_) span -= span % period_;  // from an enabled tick, whole DDA periods (quiet_o's)
     t.ticks_i = static_cast<uint32_t>(span);
     t.clk_i = 1;
+    t.dda_clk_i = t.dda_step_o;
     t.eval();
     ticks_ += span;
     if (series_) fifo_levels_.level(ticks_, t.fifo_count_o);
