@@ -55,9 +55,11 @@ module vram #(
 
   // An operation ends on the tick its count reaches 1; a new one can be
   // accepted on that same tick, so back-to-back cycles leave no gap.
-  logic port_busy, clear_pending_q;
+  logic port_busy, clear_pending_q, accepting;
   assign finishing = busy_q && left_q == LT'(1);
   assign port_busy = busy_q && !finishing;
+  // A page request is taken this tick (after any due stolen cycle or clear).
+  assign accepting = !port_busy && !steal_due_q && !clear_pending_q && !clear_i && req_i;
   // A due stolen cycle or a pending clear goes before any request. (The
   // clear's own request tick is not in it: the harness asks for a clear only
   // with the back end idle, and no logic hangs on the clear_i input.)
@@ -103,7 +105,7 @@ module vram #(
         buf_q <= !front_q;
         bg_q <= background_i;
         left_q <= clear_ticks_i == 0 ? LT'(1) : clear_ticks_i;
-      end else if (!port_busy && req_i) begin
+      end else if (accepting) begin
         busy_q <= 1'b1;
         buf_q <= !front_q;
         we_q <= we_i;
@@ -129,9 +131,12 @@ module vram #(
                      : steal_count_q + 1'b1 >= steal_period_ticks_i ? '0 : steal_period_ticks_i - 1'b1 - steal_count_q;
   assign quiet_o = port_quiet < steal_quiet ? port_quiet : steal_quiet;
 
-  // The array itself: behavioural, written at the end of an operation. Blocking
-  // writes inside loops (Verilator cannot schedule delayed ones to an array in
-  // a loop); the array is only read combinationally, outside this block.
+  // The array itself: behavioural, written at the end of an operation and
+  // read when a fetch is taken (nothing writes the page while it is in
+  // flight: one operation at a time, stolen cycles move no data), after a
+  // write ending on the same tick. Blocking writes inside loops (Verilator
+  // cannot schedule delayed ones to an array in a loop).
+  logic [PW-1:0] rdata_q, fetched;
   /* verilator lint_off BLKSEQ */
   always_ff @(posedge clk_i) begin
     if (rst_ni && finishing && !stealing_q) begin
@@ -149,13 +154,15 @@ module vram #(
         end
       end
     end
+    // Read data of the page being fetched: the back buffer and Z.
+    if (rst_ni && accepting && !we_i) begin
+      for (int i = 0; i < N; i++) begin
+        fetched[i*CW+:CW] = front_q ? {mem[{page_i, IW'(i)}][B0+:RGB], mem[{page_i, IW'(i)}][ZL+:ZO]}
+                                    : {mem[{page_i, IW'(i)}][B1+:RGB], mem[{page_i, IW'(i)}][ZL+:ZO]};
+      end
+      rdata_q <= fetched;
+    end
   end
   /* verilator lint_on BLKSEQ */
-
-  // Read data of the page being fetched: the back buffer and Z.
-  for (genvar i = 0; i < N; i++) begin : g_read
-    logic [girtd_pkg::VRAM_W-1:0] word;
-    assign word = mem[{page_q, IW'(i)}];
-    assign rdata_o[i*CW+:CW] = !buf_q ? {word[B0+:RGB], word[ZL+:ZO]} : {word[B1+:RGB], word[ZL+:ZO]};
-  end
+  assign rdata_o = rdata_q;
 endmodule
