@@ -1,6 +1,7 @@
 // GIRTD's back end as one RTL top (§4-§7): DDA -> FIFO -> HAD (+ cache) ->
 // VRAM. Everything runs on one base tick (config timing.base_tick_ns, 5 ns);
-// the DDA acts on every `dda_period_ticks_i`-th tick (35 ns = 7), the HAD
+// the DDA acts on every `dda_period_ticks_i`-th tick (35 ns = 7) it is not
+// stalled on, on a clock of its own gated from it (dda_clk_i), the HAD
 // counts its access and blend times and the VRAM its cycles in ticks, all
 // run-time inputs. The harness loads parameter sets and drives the frame:
 // clear (serial port), triangles, flush (cache page back to VRAM), swap.
