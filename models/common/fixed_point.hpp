@@ -37,10 +37,13 @@ inline int64_t wrap_to_bits(int64_t v, int bits) {
 
 inline int64_t wrap(int64_t v, const FixFormat& f) { return wrap_to_bits(v, f.total_bits()); }
 
+// 2^n for 0 <= n < 63, exactly (std::ldexp's value; a per-triangle cost in the preparer).
+inline double pow2(int n) { return static_cast<double>(int64_t{1} << n); }
+
 // Float to fixed: symmetric rounding (half away from zero), saturated to the
 // register range. `clamped` reports a saturation (the value did not fit).
 inline int64_t to_fixed(double x, const FixFormat& f, bool* clamped = nullptr) {
-  const double scaled = std::round(x * std::ldexp(1.0, f.frac_bits));
+  const double scaled = std::round(x * pow2(f.frac_bits));
   const double hi = static_cast<double>(f.raw_max());
   const double lo = static_cast<double>(f.raw_min());
   bool c = !(scaled >= lo && scaled <= hi);  // NaN counts as clamped

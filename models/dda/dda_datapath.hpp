@@ -128,11 +128,13 @@ class ExactDatapath {
       dy_[i] = in.ep[i].dy;
     }
   }
-  void step_x(int s) { step_x_times(s, 1); }
-  void step_x_times(int s, int64_t n) {
-    pix_.x += static_cast<int>(s * n);
-    for (int i = 0; i < kEpCount; ++i) pix_.v[i] += s * n * dx_[i];
+  void step_x(int s) {
+    pix_.x += s;
+    for (int i = 0; i < kEpCount; ++i) pix_.v[i] += s * dx_[i];
   }
+  // The span path's jump to a run's last pixel (registers it computed: the
+  // steps it stands for are plain adds here).
+  void move_to(const DdaRegisters& r) { pix_ = r; }
   void step_y() {
     ++pix_.y;
     for (int i = 0; i < kEpCount; ++i) pix_.v[i] += dy_[i];

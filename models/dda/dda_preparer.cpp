@@ -14,7 +14,7 @@ namespace {
 constexpr double kRawLimit = 0x1p62;
 
 int64_t raw_of(double x, int frac_bits) {
-  return static_cast<int64_t>(std::clamp(std::round(std::ldexp(x, frac_bits)), -kRawLimit, kRawLimit));
+  return static_cast<int64_t>(std::clamp(std::round(x * pow2(frac_bits)), -kRawLimit, kRawLimit));
 }
 
 }  // namespace

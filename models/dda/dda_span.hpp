@@ -56,10 +56,13 @@ struct SpanSteps {
 // sink (if `emit`), and its clipped outputs counted as the clocked path
 // counts them. Where both ends are plain (DdaEmission::plain), so is every
 // pixel between: nothing clips, and each pixel is emit_plain's.
+// Returns the registers at the span's last pixel.
 template <typename Sink>
-void emit_span(const DdaEmission& em, DdaRegisters r, int s, const std::array<int64_t, kEpCount>& step, int64_t n,
-               uint64_t first_cycle, bool emit, const Sink& sink, std::array<uint64_t, kEpCount>& saturations) {
-  DdaRegisters last = r;  // the outputs' and edges' registers at the span's last pixel
+DdaRegisters emit_span(const DdaEmission& em, DdaRegisters r, int s, const std::array<int64_t, kEpCount>& step,
+                       int64_t n, uint64_t first_cycle, bool emit, const Sink& sink,
+                       std::array<uint64_t, kEpCount>& saturations) {
+  DdaRegisters last = r;
+  last.x += static_cast<int>(s * (n - 1));
   for (int i = 0; i < kEpCount; ++i) last.v[i] += (n - 1) * step[i];
   const bool plain = em.plain(r) && em.plain(last);
   if (!plain) {
@@ -69,11 +72,11 @@ void emit_span(const DdaEmission& em, DdaRegisters r, int s, const std::array<in
       for (int64_t k = 0; k < n; ++k, v += step[i]) saturations[i] += em.counts_saturation(i, v);
     }
   }
-  if (!emit) return;
+  if (!emit) return last;
   if constexpr (TakesRuns<Sink>::value) {
     if (plain) {
       deliver_plain_run(sink, em.plain_format(), r, step, s, n);
-      return;
+      return last;
     }
   }
   const DdaEmission::PlainFormat f = em.plain_format();
@@ -85,6 +88,7 @@ void emit_span(const DdaEmission& em, DdaRegisters r, int s, const std::array<in
     r.x += s;
     for (int i = 0; i < kEpCount; ++i) r.v[i] += step[i];
   }
+  return last;
 }
 
 }  // namespace girtd

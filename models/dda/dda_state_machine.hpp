@@ -137,8 +137,9 @@ DdaRunStats run_state_machine(const Params& params, const DdaParams& in, Datapat
         const int64_t n = inside(r) ? span_length(emission, in, r, s) : 0;
         const bool at_limit = n > 0 && r.x + s * (n - 1) == (s > 0 ? in.xmax : in.xmin);
         if (n > 0) {
-          emit_span(emission, r, s, steps.toward(s), n, st.cycles + found + latency, has_sink, sink, saturations);
-          dp.step_x_times(s, at_limit ? n - 1 : n);
+          dp.move_to(emit_span(emission, r, s, steps.toward(s), n, st.cycles + found + latency, has_sink, sink,
+                               saturations));
+          if (!at_limit) dp.step_x(s);
         }
         uint64_t clocks = static_cast<uint64_t>(at_limit ? n : n + 1);
         st.emitted += static_cast<uint64_t>(n);
