@@ -1,9 +1,11 @@
-// A span's pixels handed to a sink as one run (the span path,
+// A plain span's pixels handed to a sink as one run (the span path,
 // dda_span.hpp). A sink that takes runs says so (kTakesRuns) and has
-// run(source); any other gets DdaEmits one by one. A run source gives
-// size() pixels along row y() from x_first() to x_last(), each from next()
-// as a RunPixel: what the HAD reads, no registers and no clock; and whether
-// every one of them is covered and opaque (covered_opaque()).
+// run(source); it gets every other pixel, and any other sink all of them,
+// as DdaEmits one by one. A run source gives
+// size() pixels along row y() from x_first() to x_last(), one per DDA clock
+// from first_cycle() on (the clock each leaves the DDA, as DdaEmit::cycle),
+// each from next() as a RunPixel: what the HAD reads, no registers; and
+// whether every one of them is covered and opaque (covered_opaque()).
 #pragma once
 
 #include <algorithm>
@@ -34,8 +36,8 @@ template <bool kFringe, bool kVaryingT>
 class PlainRun {
  public:
   PlainRun(const DdaEmission::PlainFormat& f, const DdaRegisters& r, const std::array<int64_t, kEpCount>& step, int s,
-           int64_t n)
-      : f_(f), x_(r.x), y_(r.y), s_(s), x_last_(r.x + static_cast<int>(s * (n - 1))), n_(n) {
+           int64_t n, uint64_t first_cycle)
+      : f_(f), x_(r.x), y_(r.y), s_(s), x_last_(r.x + static_cast<int>(s * (n - 1))), n_(n), first_cycle_(first_cycle) {
     for (int i = 0; i < kStepped; ++i) {
       v_[i] = r.v[i];
       step_[i] = step[i];
@@ -46,6 +48,7 @@ class PlainRun {
   int y() const { return y_; }
   int x_first() const { return x_; }
   int x_last() const { return x_last_; }
+  uint64_t first_cycle() const { return first_cycle_; }
   // Every pixel is inside the triangle, and opaque (nf = 1).
   bool covered_opaque() const { return !kFringe && !kVaryingT && nf_ == kNfOne; }
   RunPixel next() {
@@ -75,6 +78,7 @@ class PlainRun {
   DdaEmission::PlainFormat f_;
   int x_, y_, s_, x_last_;
   int64_t n_;
+  uint64_t first_cycle_;
   uint16_t nf_ = 0;
   std::array<int64_t, kStepped> v_{}, step_{};
 };
@@ -82,30 +86,15 @@ class PlainRun {
 // Hands a plain span to a run sink through the PlainRun that fits it.
 template <typename Sink>
 void deliver_plain_run(const Sink& sink, const DdaEmission::PlainFormat& f, const DdaRegisters& r,
-                       const std::array<int64_t, kEpCount>& step, int s, int64_t n) {
+                       const std::array<int64_t, kEpCount>& step, int s, int64_t n, uint64_t first_cycle) {
   const bool fringe = f.soft_edges != 0, varying_t = step[kEpT] != 0;
   if (fringe) {
-    if (varying_t) sink.run(PlainRun<true, true>(f, r, step, s, n));
-    else sink.run(PlainRun<true, false>(f, r, step, s, n));
+    if (varying_t) sink.run(PlainRun<true, true>(f, r, step, s, n, first_cycle));
+    else sink.run(PlainRun<true, false>(f, r, step, s, n, first_cycle));
   } else {
-    if (varying_t) sink.run(PlainRun<false, true>(f, r, step, s, n));
-    else sink.run(PlainRun<false, false>(f, r, step, s, n));
+    if (varying_t) sink.run(PlainRun<false, true>(f, r, step, s, n, first_cycle));
+    else sink.run(PlainRun<false, false>(f, r, step, s, n, first_cycle));
   }
 }
-
-// One emitted pixel as a run source.
-class OnePixelRun {
- public:
-  explicit OnePixelRun(const DdaEmit& e) : p_{e.pixel, e.covered} {}
-  int64_t size() const { return 1; }
-  int y() const { return p_.pixel.y; }
-  int x_first() const { return p_.pixel.x; }
-  int x_last() const { return p_.pixel.x; }
-  bool covered_opaque() const { return false; }  // not worth a case of its own
-  RunPixel next() const { return p_; }
-
- private:
-  RunPixel p_;
-};
 
 }  // namespace girtd

@@ -75,16 +75,14 @@ DdaRegisters emit_span(const DdaEmission& em, DdaRegisters r, int s, const std::
   if (!emit) return last;
   if constexpr (TakesRuns<Sink>::value) {
     if (plain) {
-      deliver_plain_run(sink, em.plain_format(), r, step, s, n);
+      deliver_plain_run(sink, em.plain_format(), r, step, s, n, first_cycle);
       return last;
     }
   }
   const DdaEmission::PlainFormat f = em.plain_format();
   for (int64_t k = 0; k < n; ++k) {
     const uint64_t cycle = first_cycle + static_cast<uint64_t>(k);
-    const DdaEmit e = plain ? DdaEmission::emit_plain(f, r, cycle) : em.emit(r, cycle);
-    if constexpr (TakesRuns<Sink>::value) sink.run(OnePixelRun(e));
-    else sink(e);
+    sink(plain ? DdaEmission::emit_plain(f, r, cycle) : em.emit(r, cycle));
     r.x += s;
     for (int i = 0; i < kEpCount; ++i) r.v[i] += step[i];
   }

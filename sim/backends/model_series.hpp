@@ -32,6 +32,11 @@ class ModelSeries {
   void begin_frame() { maps_.begin_frame(); }
   // After model.pixel() for the pixel at (x, y) (its FIFO push the model watches).
   void pixel(int x, int y) { maps_.drawn(x, y); }
+  // After model.pixel() for each pixel of a run along row y, x_a to x_b.
+  void run(int y, int x_a, int x_b) {
+    maps_.drawn(x_a, y);
+    maps_.drawn(x_b, y);
+  }
   void end_triangle(uint64_t dda_cycles, uint64_t emitted) { maps_.end_triangle(dda_cycles, emitted); }
 
   FifoSeries fifo(uint64_t end) const {

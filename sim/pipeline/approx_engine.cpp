@@ -53,12 +53,31 @@ class ApproxEngine : public BackendEngine {
         break;
     }
   }
+  // The HAD and the event model as the DDA's sink: pixel by pixel, or a
+  // span's pixels as one run (one clock each from its first; the heat map
+  // takes the run's ends).
+  struct Sink {
+    static constexpr bool kTakesRuns = true;
+    ApproxEngine& e;
+    int layer;
+    void operator()(const DdaEmit& px) const {
+      e.timing_.pixel({px.cycle, px.pixel.x, px.pixel.y, e.had_.update(px.pixel, layer, px.covered)});
+      if (e.series_) e.series_->pixel(px.pixel.x, px.pixel.y);
+    }
+    template <typename Run>
+    void run(const Run& pixels) const {
+      Run r = pixels;
+      const uint64_t first = r.first_cycle();
+      for (int64_t k = 0; k < r.size(); ++k) {
+        const RunPixel p = r.next();
+        e.timing_.pixel({first + static_cast<uint64_t>(k), p.pixel.x, p.pixel.y, e.had_.update(p.pixel, layer, p.covered)});
+      }
+      if (e.series_) e.series_->run(pixels.y(), pixels.x_first(), pixels.x_last());
+    }
+  };
   void simulate(const DdaParams& d) {
     timing_.begin_triangle();
-    const DdaRunStats st = dda_.run_inline(d, [&](const DdaEmit& e) {
-      timing_.pixel({e.cycle, e.pixel.x, e.pixel.y, had_.update(e.pixel, d.layer, e.covered)});
-      if (series_) series_->pixel(e.pixel.x, e.pixel.y);
-    });
+    const DdaRunStats st = dda_.run_inline(d, Sink{*this, d.layer});
     timing_.end_triangle(st.cycles);
     if (series_) series_->end_triangle(st.cycles, st.emitted);
     accumulate(r_.dda, st);
