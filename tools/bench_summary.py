@@ -139,7 +139,7 @@ def speed(_):
                 "|---|---|---|---|---|"]
         for r in s["golden_vs_llvmpipe"]:
             out.append(f"| {r['workload']} | {r['pixels_generated']:,.0f} | {r['golden_wall_s']:.3f} | "
-                       f"{r['llvmpipe_s']:.3f} | {r['ratio']:.1f}x |")
+                       f"{r['llvmpipe_s']:.3f} | {r['ratio']:.2f}x |")
     out += ["", "What report.html's series cost: the median over pairs of renders (with, without) of their ratio.", "",
             "| input | back end | pairs | wall s with the series | without | cost | process s with | without | cost |",
             "|---|---|---|---|---|---|---|---|---|"]

@@ -64,7 +64,7 @@ GoldenSpeedBench run_golden_speed_bench(const Params& params, const ConfigFiles&
                     {"pixels_generated", pixels}, {"golden_wall_s", g}, {"llvmpipe_s", l}, {"ratio", ratio},
                     {"within_2x", within}});
   char line[256];
-  std::snprintf(line, sizeof line, "| %d random opaque 200-px triangles | %.0f | %.3f | %.3f | %.1fx | %s |\n", kTriangles,
+  std::snprintf(line, sizeof line, "| %d random opaque 200-px triangles | %.0f | %.3f | %.3f | %.2fx | %s |\n", kTriangles,
                 pixels, g, l, ratio, within ? "yes" : "no");
   b.markdown += line;
   std::fputs(line, stdout);
