@@ -59,8 +59,10 @@ class DdaEngine {
   // wrap (may_wrap); its numerics are the same.
   void skip_unreachable_wraps(bool skip) { skip_unreachable_wraps_ = skip; }
   // Simulator pruning: a triangle that cannot wrap (exact_steps) runs with
-  // plain adds and each emitting run computed as one span
-  // (dda_state_machine.hpp); same pixels, clocks and counts. Not with a probe.
+  // plain adds, without the wrap detector's registers (it counts as
+  // `undetected`, whatever skip_unreachable_wraps says), and each emitting
+  // run computed as one span (dda_state_machine.hpp); same pixels, clocks
+  // and counts. Not with a probe.
   void compute_spans(bool on) { spans_ = on; }
 
   DdaRunStats run(const DdaParams& in, const PixelSink& sink, const ClockProbe& probe = {}) const;

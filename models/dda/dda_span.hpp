@@ -15,9 +15,10 @@
 
 namespace girtd {
 
-// floor(a / b) for 0 <= a, 0 < b below 2^52 (no wrap: register values):
-// through a double division, which is much faster than a 64-bit integer
-// one here, and made exact by one step either way.
+// floor(a / b) for 0 <= a, 0 < b, where the quotient is below a run's
+// width and k b <= a + b < 2^63 (register values that cannot wrap): through
+// a double division, much faster than a 64-bit integer one, whose estimate
+// is then off by at most one, corrected by one step either way.
 inline int64_t whole_quotient(int64_t a, int64_t b) {
   int64_t k = static_cast<int64_t>(static_cast<double>(a) / static_cast<double>(b));
   if (k * b > a) --k;

@@ -45,6 +45,8 @@ DdaRunStats run_state_machine(const Params& params, const DdaParams& in, Datapat
   const bool fix = params.walk_fix;
   const bool pipelined_compare = params.xy_compare_pipelined;
   const bool has_sink = is_set(sink), has_probe = is_set(probe);
+  // The span path reads the live registers, and takes several clocks at once.
+  if (kSpans && has_probe) throw std::logic_error("DDA: the span path takes no clock probe");
 
   bool d_tested = false;  // this clock read D1..D3 (wrapped ones are counted then)
   auto d_inside = [&](const DdaRegisters& r) {

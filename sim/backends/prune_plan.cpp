@@ -25,9 +25,11 @@ std::vector<LeftOut> left_out(const RunStats& s) {
                                         "(models/dda/dda_datapath.hpp may_wrap)"});
   if (s.dda && s.dda->span_clocks > 0)
     out.push_back({"DDA clocks", std::to_string(s.dda->span_clocks) + " of " + std::to_string(s.dda->cycles) +
-                                     " DDA clocks were computed as whole spans, not one by one: in a triangle "
-                                     "that cannot wrap, a run's registers are linear in X, so its length and "
-                                     "clipped outputs follow from its ends (models/dda/dda_span.hpp)"});
+                                     " DDA clocks were taken on the span path, not one loop iteration each: in a "
+                                     "triangle that cannot wrap, a run's registers are linear in X, so its length "
+                                     "and clipped outputs follow from its ends; the clocks that find and end the "
+                                     "run, and the one-clock states after it, are counted with it "
+                                     "(models/dda/dda_span.hpp)"});
   return out;
 }
 

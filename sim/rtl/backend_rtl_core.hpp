@@ -38,8 +38,11 @@ template <typename M, typename = void>
 struct HasClockMemory : std::false_type {};
 template <typename M>
 struct HasClockMemory<M, std::void_t<decltype(std::declval<M&>().rootp->__Vtrigrprev__TOP__clk_i),
-                                     decltype(std::declval<M&>().rootp->__Vtrigrprev__TOP__dda_clk_i)>>
-    : std::true_type {};
+                                     decltype(std::declval<M&>().rootp->__Vtrigrprev__TOP__dda_clk_i),
+                                     decltype(std::declval<M&>().rootp->__VactTriggered)>>
+    // Exactly those two clocks trigger anything: another would need its memory reset too.
+    : std::bool_constant<std::is_same_v<std::decay_t<decltype(std::declval<M&>().rootp->__VactTriggered)>,
+                                        VlTriggerVec<2>>> {};
 
 template <typename Model>
 class BackendRtlCore final : public BackendRtl {

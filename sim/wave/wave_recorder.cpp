@@ -204,9 +204,13 @@ std::string gtkw_text(const std::vector<FstVar>& vars, const std::vector<std::st
   group("RTL: back end ports", "TOP.girtd_backend", false,
         {"clk_i", "in_valid_i", "in_ready_o", "clear_i", "flush_i", "swap_i", "idle_o", "front_o", "dda_state_o",
          "dda_active_o", "pixel_push_o", "pixel_x_o", "pixel_y_o", "pixels_generated_o", "page_misses_o"});
+  // The DDA runs on its own clock and never holds inside (hw/README.md):
+  // its handshake and stall are the top's.
+  group("RTL: DDA clock and handshake", "TOP.girtd_backend", true,
+        {"dda_clk_i", "dda_step_o", "dda_hold", "in_valid_i", "in_ready_o", "dda_active", "dda_stall", "out_valid",
+         "fifo_full"});
   group("RTL: DDA", "TOP.girtd_backend.u_dda", true,
-        {"in_valid_i", "in_ready_o", "out_valid_o", "out_ready_i", "out_x_o", "out_y_o", "out_z_o", "active_o",
-         "state_q", "emit", "stall", "x", "y", "y_past_end"});
+        {"out_valid_o", "out_x_o", "out_y_o", "out_z_o", "state_q", "emit", "x", "y", "y_past_end"});
   group("RTL: DDA, every signal", "TOP.girtd_backend.u_dda", false, {});
   group("RTL: DDA -> HAD FIFO", "TOP.girtd_backend.u_fifo", false, {});
   group("RTL: HAD", "TOP.girtd_backend.u_had", false, {});
