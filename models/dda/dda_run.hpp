@@ -1,7 +1,7 @@
-// A plain span's pixels handed to a sink as one run (the span path,
+// A span's pixels handed to a sink as one run (the span path,
 // dda_span.hpp). A sink that takes runs says so (kTakesRuns) and has
-// run(source); it gets every other pixel, and any other sink all of them,
-// as DdaEmits one by one. A run source gives
+// run(source); it gets the clocked path's pixels, and any other sink all
+// of them, as DdaEmits one by one. A run source gives
 // size() pixels along row y() from x_first() to x_last(), one per DDA clock
 // from first_cycle() on (the clock each leaves the DDA, as DdaEmit::cycle),
 // each from next() as a RunPixel: what the HAD reads, no registers; and
@@ -81,6 +81,35 @@ class PlainRun {
   uint64_t first_cycle_;
   uint16_t nf_ = 0;
   std::array<int64_t, kStepped> v_{}, step_{};
+};
+
+// Any span's pixels as a run source: each as DdaEmission::emit() makes it.
+class EmittedRun {
+ public:
+  EmittedRun(const DdaEmission& em, const DdaRegisters& r, const std::array<int64_t, kEpCount>& step, int s, int64_t n,
+             uint64_t first_cycle)
+      : em_(&em), r_(r), step_(&step), s_(s), x_first_(r.x), x_last_(r.x + static_cast<int>(s * (n - 1))), n_(n),
+        first_cycle_(first_cycle) {}
+  int64_t size() const { return n_; }
+  int y() const { return r_.y; }
+  int x_first() const { return x_first_; }
+  int x_last() const { return x_last_; }
+  uint64_t first_cycle() const { return first_cycle_; }
+  bool covered_opaque() const { return false; }
+  RunPixel next() {
+    const DdaEmit e = em_->emit(r_, 0);
+    r_.x += s_;
+    for (int i = 0; i < kEpCount; ++i) r_.v[i] += (*step_)[i];
+    return {e.pixel, e.covered};
+  }
+
+ private:
+  const DdaEmission* em_;
+  DdaRegisters r_;
+  const std::array<int64_t, kEpCount>* step_;
+  int s_, x_first_, x_last_;
+  int64_t n_;
+  uint64_t first_cycle_;
 };
 
 // Hands a plain span to a run sink through the PlainRun that fits it.

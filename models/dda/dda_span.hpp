@@ -54,9 +54,10 @@ struct SpanSteps {
 
 
 // The span's n pixels from `r`, one per clock from `first_cycle`, to the
-// sink (if `emit`), and its clipped outputs counted as the clocked path
-// counts them. Where both ends are plain (DdaEmission::plain), so is every
-// pixel between: nothing clips, and each pixel is emit_plain's.
+// sink (if `emit`; as one run to a sink that takes runs), and its clipped
+// outputs counted as the clocked path counts them. Where both ends are
+// plain (DdaEmission::plain), so is every pixel between: nothing clips, and
+// each pixel is emit_plain's.
 // Returns the registers at the span's last pixel.
 template <typename Sink>
 DdaRegisters emit_span(const DdaEmission& em, DdaRegisters r, int s, const std::array<int64_t, kEpCount>& step,
@@ -75,10 +76,9 @@ DdaRegisters emit_span(const DdaEmission& em, DdaRegisters r, int s, const std::
   }
   if (!emit) return last;
   if constexpr (TakesRuns<Sink>::value) {
-    if (plain) {
-      deliver_plain_run(sink, em.plain_format(), r, step, s, n, first_cycle);
-      return last;
-    }
+    if (plain) deliver_plain_run(sink, em.plain_format(), r, step, s, n, first_cycle);
+    else sink.run(EmittedRun(em, r, step, s, n, first_cycle));
+    return last;
   }
   const DdaEmission::PlainFormat f = em.plain_format();
   for (int64_t k = 0; k < n; ++k) {
