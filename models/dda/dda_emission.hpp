@@ -74,16 +74,37 @@ class DdaEmission {
   // span of a linear register, it holds all along.
   bool plain(const DdaRegisters& r) const {
     for (int i : kOutputEps)
-      if (r.v[i] < plain_lo_[i] || r.v[i] > plain_hi_[i]) return false;
+      if (r.v[i] < 0 || r.v[i] > plain_hi_[i]) return false;
     return !(((soft_edges_ & 1) && r.v[kEpD1] < 0) || ((soft_edges_ & 2) && r.v[kEpD2] < 0) ||
              ((soft_edges_ & 4) && r.v[kEpD3] < 0));
   }
   // What emit_plain needs, by value: a copy the compiler can keep in
-  // registers while the sink writes memory.
+  // registers while the sink writes memory. Its three parts of a plain
+  // pixel serve emit_plain and the span path's PlainRun alike.
   struct PlainFormat {
     int colour_frac, z_frac, t_frac;  // R, G and B share one format (ep.color)
     int64_t t_top;
     unsigned soft_edges;
+
+    // X, Y, R, G, B and Z from the registers R..Z at v (nf left 0).
+    Pixel outputs(int x, int y, const int64_t* v) const {
+      Pixel p;
+      p.x = x;
+      p.y = y;
+      p.r = static_cast<uint8_t>(v[kEpR] >> colour_frac);
+      p.g = static_cast<uint8_t>(v[kEpG] >> colour_frac);
+      p.b = static_cast<uint8_t>(v[kEpB] >> colour_frac);
+      p.z = static_cast<uint16_t>(v[kEpZ] >> z_frac);
+      return p;
+    }
+    // nf: T, its 1.0 carried out as 255 (t_operand).
+    uint16_t nf(int64_t t) const {
+      return static_cast<uint16_t>(t_operand(static_cast<int>(std::min(t >> t_frac, t_top))));
+    }
+    // Covered unless on a soft edge (D = 0), from D1..D3 at d.
+    bool covered(const int64_t* d) const {
+      return !(((soft_edges & 1) && d[0] == 0) || ((soft_edges & 2) && d[1] == 0) || ((soft_edges & 4) && d[2] == 0));
+    }
   };
   PlainFormat plain_format() const {
     return {format_[kEpR]->frac_bits, format_[kEpZ]->frac_bits, format_[kEpT]->frac_bits,
@@ -94,15 +115,9 @@ class DdaEmission {
     DdaEmit e;
     e.raw = r.v;
     e.cycle = cycle;
-    e.pixel.x = r.x;
-    e.pixel.y = r.y;
-    e.pixel.r = static_cast<uint8_t>(r.v[kEpR] >> f.colour_frac);
-    e.pixel.g = static_cast<uint8_t>(r.v[kEpG] >> f.colour_frac);
-    e.pixel.b = static_cast<uint8_t>(r.v[kEpB] >> f.colour_frac);
-    e.pixel.z = static_cast<uint16_t>(r.v[kEpZ] >> f.z_frac);
-    e.pixel.nf = static_cast<uint16_t>(t_operand(static_cast<int>(std::min(r.v[kEpT] >> f.t_frac, f.t_top))));
-    e.covered = !(((f.soft_edges & 1) && r.v[kEpD1] == 0) || ((f.soft_edges & 2) && r.v[kEpD2] == 0) ||
-                  ((f.soft_edges & 4) && r.v[kEpD3] == 0));
+    e.pixel = f.outputs(r.x, r.y, r.v.data());
+    e.pixel.nf = f.nf(r.v[kEpT]);
+    e.covered = f.covered(&r.v[kEpD1]);
     return e;
   }
 
@@ -115,7 +130,7 @@ class DdaEmission {
   std::array<NormUnit, 3> norm_;
   std::array<const FixFormat*, kEpCount> format_{};
   std::array<int64_t, 3> lowest_inside_{};
-  std::array<int64_t, kEpCount> plain_lo_{}, plain_hi_{};  // plain(): 0 .. the top of each output's range
+  std::array<int64_t, kEpCount> plain_hi_{};  // plain(): each output's values run 0 .. this
   unsigned soft_edges_ = 0;  // bit i: D(i+1) has a fringe (Q > 0, not a hard edge): 0 is on its boundary
 };
 

@@ -42,7 +42,7 @@ class PlainRun {
       v_[i] = r.v[i];
       step_[i] = step[i];
     }
-    nf_ = nf_of(v_[kEpT]);
+    nf_ = f_.nf(v_[kEpT]);
   }
   int64_t size() const { return n_; }
   int y() const { return y_; }
@@ -53,17 +53,10 @@ class PlainRun {
   bool covered_opaque() const { return !kFringe && !kVaryingT && nf_ == kNfOne; }
   RunPixel next() {
     RunPixel p;
-    p.pixel.x = x_;
-    p.pixel.y = y_;
-    p.pixel.r = static_cast<uint8_t>(v_[kEpR] >> f_.colour_frac);
-    p.pixel.g = static_cast<uint8_t>(v_[kEpG] >> f_.colour_frac);
-    p.pixel.b = static_cast<uint8_t>(v_[kEpB] >> f_.colour_frac);
-    p.pixel.z = static_cast<uint16_t>(v_[kEpZ] >> f_.z_frac);
-    p.pixel.nf = kVaryingT ? nf_of(v_[kEpT]) : nf_;
+    p.pixel = f_.outputs(x_, y_, v_.data());
+    p.pixel.nf = kVaryingT ? f_.nf(v_[kEpT]) : nf_;
     p.covered = true;
-    if constexpr (kFringe)
-      p.covered = !(((f_.soft_edges & 1) && v_[kEpD1] == 0) || ((f_.soft_edges & 2) && v_[kEpD2] == 0) ||
-                    ((f_.soft_edges & 4) && v_[kEpD3] == 0));
+    if constexpr (kFringe) p.covered = f_.covered(&v_[kEpD1]);
     x_ += s_;
     for (int i = 0; i < kStepped; ++i) v_[i] += step_[i];
     return p;
@@ -72,9 +65,6 @@ class PlainRun {
  private:
   static_assert(kEpR == 0 && kEpZ == 4 && kEpD1 == 5, "R..Z then the edges: the stepped prefix");
   static constexpr int kStepped = kFringe ? kEpCount : kEpZ + 1;
-  uint16_t nf_of(int64_t t) const {
-    return static_cast<uint16_t>(t_operand(static_cast<int>(std::min(t >> f_.t_frac, f_.t_top))));
-  }
   DdaEmission::PlainFormat f_;
   int x_, y_, s_, x_last_;
   int64_t n_;

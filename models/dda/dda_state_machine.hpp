@@ -4,8 +4,9 @@
 //   transfer, adders wrapping like the hardware's, the wrap detector's
 //   registers beside them;
 // - ExactDatapath, for a triangle that cannot wrap (exact_steps): plain adds,
-//   and each emitting run's clocks but its last computed as one span
-//   (dda_span.hpp), from the registers at its first pixel.
+//   and each emitting run, with the clocks that find and end it and the
+//   one-clock states after it, taken as one span (dda_span.hpp) from the
+//   registers at its first pixel.
 // Header-only so that a caller's pixel sink is inlined (DdaEngine::run_inline).
 #pragma once
 
