@@ -115,38 +115,65 @@ inline bool exact_steps(const Params& p, const DdaParams& in) {
 }
 
 // DdaDatapath for a triangle where nothing can wrap (exact_steps): the same
-// registers with plain adds, and no wrap detector (exact() is pix()).
+// registers with plain adds, and no wrap detector (exact() is pix()). Each
+// register is then v0 + (X - x0) dX + (Y - y0) dY, so only what the state
+// machine tests clock by clock is stepped: X, Y and the edges D1..D3. The
+// outputs R..Z are worked out where a run starts (with_outputs()).
 class ExactDatapath {
  public:
   static constexpr bool kExact = true;
-  ExactDatapath(const Params& p, const DdaParams& in) {
+  ExactDatapath(const Params& p, const DdaParams& in) : x0_(in.x0), y0_(in.y0) {
     pix_.x = in.x0;
     pix_.y = in.y0;
     for (int i = 0; i < kEpCount; ++i) {
-      pix_.v[i] = wrap(in.ep[i].v, DdaDatapath::format_of(p, i));
-      dx_[i] = in.ep[i].dx;
+      pix_.v[i] = v0_[i] = wrap(in.ep[i].v, DdaDatapath::format_of(p, i));
+      right_[i] = in.ep[i].dx;
+      left_[i] = -in.ep[i].dx;
       dy_[i] = in.ep[i].dy;
     }
+    aux_ = live();
   }
-  void step_x(int s) {
-    pix_.x += s;
-    for (int i = 0; i < kEpCount; ++i) pix_.v[i] += s * dx_[i];
+  // The registers' steps to the right (s = +1) and to the left: kept both
+  // ways, so that a step is adds only.
+  const std::array<int64_t, kEpCount>& toward(int s) const { return s > 0 ? right_ : left_; }
+  void step_x(int s) { step_x_by(s, 1); }
+  // k steps of step_x(s) at once (the span path's jump along a run).
+  void step_x_by(int s, int64_t k) {
+    pix_.x += static_cast<int>(s * k);
+    const std::array<int64_t, kEpCount>& d = toward(s);
+    for (int i = kEpD1; i <= kEpD3; ++i) pix_.v[i] += k * d[i];
   }
-  // The span path's jump to a run's last pixel (registers it computed: the
-  // steps it stands for are plain adds here).
-  void move_to(const DdaRegisters& r) { pix_ = r; }
   void step_y() {
     ++pix_.y;
-    for (int i = 0; i < kEpCount; ++i) pix_.v[i] += dy_[i];
+    for (int i = kEpD1; i <= kEpD3; ++i) pix_.v[i] += dy_[i];
   }
-  const DdaRegisters& exact() const { return pix_; }
-  void save() { aux_ = pix_; }
-  void restore() { pix_ = aux_; }
+  // X, Y and D1..D3 as they stand; R..Z as the last with_outputs() left them.
   const DdaRegisters& pix() const { return pix_; }
+  const DdaRegisters& exact() const { return pix_; }
+  // Every register as it stands.
+  const DdaRegisters& with_outputs() {
+    const int64_t dx = pix_.x - x0_, dy = pix_.y - y0_;
+    for (int i = kEpR; i <= kEpZ; ++i) pix_.v[i] = v0_[i] + dx * right_[i] + dy * dy_[i];
+    return pix_;
+  }
+  void save() { aux_ = live(); }
+  void restore() {
+    pix_.x = aux_.x;
+    pix_.y = aux_.y;
+    for (int e = 0; e < 3; ++e) pix_.v[kEpD1 + e] = aux_.d[e];
+  }
 
  private:
-  DdaRegisters pix_, aux_;
-  std::array<int64_t, kEpCount> dx_{}, dy_{};
+  static_assert(kEpR == 0 && kEpZ == 4 && kEpD1 == 5 && kEpD3 == 7, "R..Z, then the edges");
+  struct Live {  // the stepped registers
+    int x, y;
+    std::array<int64_t, 3> d;
+  };
+  Live live() const { return {pix_.x, pix_.y, {pix_.v[kEpD1], pix_.v[kEpD2], pix_.v[kEpD3]}}; }
+  int x0_, y0_;
+  DdaRegisters pix_;
+  Live aux_;
+  std::array<int64_t, kEpCount> v0_{}, right_{}, left_{}, dy_{};
 };
 
 // An output stage (fig. 4.20) does not carry the EP's integer part out as

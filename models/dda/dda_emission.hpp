@@ -33,6 +33,8 @@ class DdaEmission {
       const int64_t past_top = (int64_t{1} << f.out_bits) + (i == kEpT && f.saturates() ? 1 : 0);
       plain_hi_[i] = (past_top << f.frac_bits) - 1;
     }
+    plain_format_ = {format_[kEpR]->frac_bits, format_[kEpZ]->frac_bits, format_[kEpT]->frac_bits,
+                     (int64_t{1} << format_[kEpT]->out_bits) - 1, soft_edges_};
   }
 
   const NormUnit& norm(int edge) const { return norm_[edge]; }
@@ -67,16 +69,21 @@ class DdaEmission {
     return e;
   }
 
-  // Registers of an inside pixel where emit() reduces to shifts: no output
-  // clips, and every edge with a fringe has D >= 0 (the others do, being
-  // inside), so each Norm is 1 and nf is T (§4.2.7). Each part holds on an
-  // interval of a register's values: where it holds at both ends of a
-  // span of a linear register, it holds all along.
-  bool plain(const DdaRegisters& r) const {
-    for (int i : kOutputEps)
-      if (r.v[i] < 0 || r.v[i] > plain_hi_[i]) return false;
-    return !(((soft_edges_ & 1) && r.v[kEpD1] < 0) || ((soft_edges_ & 2) && r.v[kEpD2] < 0) ||
-             ((soft_edges_ & 4) && r.v[kEpD3] < 0));
+  // Whether emit() reduces to shifts on every pixel of a span of k + 1
+  // pixels from registers v by `step` (v inside): no output clips, and
+  // every edge with a fringe has D >= 0 (the others do, being inside), so
+  // each Norm is 1 and nf is T (§4.2.7). Each part holds on an interval of
+  // a register's values, so where it holds at both ends of a linear
+  // register, it holds all along.
+  bool plain_span(const std::array<int64_t, kEpCount>& v, const std::array<int64_t, kEpCount>& step, int64_t k) const {
+    static_assert(kEpR == 0 && kEpZ == 4, "the outputs are EPs 0..4");
+    // Unsigned, 0 <= x <= hi is one compare.
+    auto within = [](int64_t x, int64_t hi) { return static_cast<uint64_t>(x) <= static_cast<uint64_t>(hi); };
+    for (int i = kEpR; i <= kEpZ; ++i)
+      if (!within(v[i], plain_hi_[i]) || !within(v[i] + k * step[i], plain_hi_[i])) return false;
+    for (int e = 0; e < 3 && soft_edges_; ++e)
+      if (((soft_edges_ >> e) & 1) && (v[kEpD1 + e] < 0 || v[kEpD1 + e] + k * step[kEpD1 + e] < 0)) return false;
+    return true;
   }
   // What emit_plain needs, by value: a copy the compiler can keep in
   // registers while the sink writes memory. Its three parts of a plain
@@ -106,11 +113,8 @@ class DdaEmission {
       return !(((soft_edges & 1) && d[0] == 0) || ((soft_edges & 2) && d[1] == 0) || ((soft_edges & 4) && d[2] == 0));
     }
   };
-  PlainFormat plain_format() const {
-    return {format_[kEpR]->frac_bits, format_[kEpZ]->frac_bits, format_[kEpT]->frac_bits,
-            (int64_t{1} << format_[kEpT]->out_bits) - 1, soft_edges_};
-  }
-  // emit() where plain(r).
+  const PlainFormat& plain_format() const { return plain_format_; }
+  // emit() where plain_span holds.
   static DdaEmit emit_plain(const PlainFormat& f, const DdaRegisters& r, uint64_t cycle) {
     DdaEmit e;
     e.raw = r.v;
@@ -130,8 +134,9 @@ class DdaEmission {
   std::array<NormUnit, 3> norm_;
   std::array<const FixFormat*, kEpCount> format_{};
   std::array<int64_t, 3> lowest_inside_{};
-  std::array<int64_t, kEpCount> plain_hi_{};  // plain(): each output's values run 0 .. this
+  std::array<int64_t, kEpCount> plain_hi_{};  // plain_span(): each output's values run 0 .. this
   unsigned soft_edges_ = 0;  // bit i: D(i+1) has a fringe (Q > 0, not a hard edge): 0 is on its boundary
+  PlainFormat plain_format_{};
 };
 
 }  // namespace girtd

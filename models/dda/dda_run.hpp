@@ -104,7 +104,7 @@ class EmittedRun {
 
 // Hands a plain span to a run sink through the PlainRun that fits it.
 template <typename Sink>
-void deliver_plain_run(const Sink& sink, const DdaEmission::PlainFormat& f, const DdaRegisters& r,
+[[gnu::always_inline]] inline void deliver_plain_run(const Sink& sink, const DdaEmission::PlainFormat& f, const DdaRegisters& r,
                        const std::array<int64_t, kEpCount>& step, int s, int64_t n, uint64_t first_cycle) {
   const bool fringe = f.soft_edges != 0, varying_t = step[kEpT] != 0;
   if (fringe) {

@@ -40,54 +40,37 @@ inline int64_t span_length(const DdaEmission& em, const DdaParams& in, const Dda
   return n;
 }
 
-// The registers' steps to the right (s = +1) and to the left, per triangle.
-struct SpanSteps {
-  explicit SpanSteps(const DdaParams& in) {
-    for (int i = 0; i < kEpCount; ++i) {
-      right[i] = in.ep[i].dx;
-      left[i] = -in.ep[i].dx;
-    }
-  }
-  const std::array<int64_t, kEpCount>& toward(int s) const { return s > 0 ? right : left; }
-  std::array<int64_t, kEpCount> right, left;
-};
-
-
 // The span's n pixels from `r`, one per clock from `first_cycle`, to the
 // sink (if `emit`; as one run to a sink that takes runs), and its clipped
 // outputs counted as the clocked path counts them. Where both ends are
-// plain (DdaEmission::plain), so is every pixel between: nothing clips, and
-// each pixel is emit_plain's.
-// Returns the registers at the span's last pixel.
+// plain (DdaEmission::plain_span), so is every pixel between: nothing
+// clips, and each pixel is emit_plain's.
 template <typename Sink>
-DdaRegisters emit_span(const DdaEmission& em, DdaRegisters r, int s, const std::array<int64_t, kEpCount>& step,
-                       int64_t n, uint64_t first_cycle, bool emit, const Sink& sink,
-                       std::array<uint64_t, kEpCount>& saturations) {
-  DdaRegisters last = r;
-  last.x += static_cast<int>(s * (n - 1));
-  for (int i = 0; i < kEpCount; ++i) last.v[i] += (n - 1) * step[i];
-  const bool plain = em.plain(r) && em.plain(last);
+[[gnu::always_inline]] inline void emit_span(const DdaEmission& em, const DdaRegisters& r, int s, const std::array<int64_t, kEpCount>& step, int64_t n,
+               uint64_t first_cycle, bool emit, const Sink& sink, std::array<uint64_t, kEpCount>& saturations) {
+  const int64_t last = n - 1;  // steps from the first pixel to the last
+  const bool plain = em.plain_span(r.v, step, last);
   if (!plain) {
     for (int i : kOutputEps) {  // pixel by pixel only for an EP that clips at an end
-      if (!output_saturates(r.v[i], em.format(i)) && !output_saturates(last.v[i], em.format(i))) continue;
+      if (!output_saturates(r.v[i], em.format(i)) && !output_saturates(r.v[i] + last * step[i], em.format(i))) continue;
       int64_t v = r.v[i];
       for (int64_t k = 0; k < n; ++k, v += step[i]) saturations[i] += em.counts_saturation(i, v);
     }
   }
-  if (!emit) return last;
+  if (!emit) return;
   if constexpr (TakesRuns<Sink>::value) {
     if (plain) deliver_plain_run(sink, em.plain_format(), r, step, s, n, first_cycle);
     else sink.run(EmittedRun(em, r, step, s, n, first_cycle));
-    return last;
+    return;
   }
-  const DdaEmission::PlainFormat f = em.plain_format();
+  const DdaEmission::PlainFormat& f = em.plain_format();
+  DdaRegisters p = r;
   for (int64_t k = 0; k < n; ++k) {
     const uint64_t cycle = first_cycle + static_cast<uint64_t>(k);
-    sink(plain ? DdaEmission::emit_plain(f, r, cycle) : em.emit(r, cycle));
-    r.x += s;
-    for (int i = 0; i < kEpCount; ++i) r.v[i] += step[i];
+    sink(plain ? DdaEmission::emit_plain(f, p, cycle) : em.emit(p, cycle));
+    p.x += s;
+    for (int i = 0; i < kEpCount; ++i) p.v[i] += step[i];
   }
-  return last;
 }
 
 }  // namespace girtd

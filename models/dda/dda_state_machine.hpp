@@ -42,7 +42,6 @@ DdaRunStats run_state_machine(const Params& params, const DdaParams& in, Datapat
   constexpr bool kSpans = Datapath::kExact;  // spans need adds that cannot wrap
   if constexpr (kSpans) detect = false;        // nothing to detect
   const DdaEmission emission(params, in);
-  const SpanSteps steps(in);
   const bool fix = params.walk_fix;
   const bool pipelined_compare = params.xy_compare_pipelined;
   const bool has_sink = is_set(sink), has_probe = is_set(probe);
@@ -140,9 +139,11 @@ DdaRunStats run_state_machine(const Params& params, const DdaParams& in, Datapat
         const int64_t n = inside(r) ? span_length(emission, in, r, s) : 0;
         const bool at_limit = n > 0 && r.x + s * (n - 1) == (s > 0 ? in.xmax : in.xmin);
         if (n > 0) {
-          dp.move_to(emit_span(emission, r, s, steps.toward(s), n, st.cycles + found + latency, has_sink, sink,
-                               saturations));
-          if (!at_limit) dp.step_x(s);
+          emit_span(emission, dp.with_outputs(), s, dp.toward(s), n, st.cycles + found + latency, has_sink, sink, saturations);
+          // The clock that ends the run is at its last pixel (at the X limit)
+          // or the outside one after it. Only LEFT goes on from there (to
+          // YSTEP); RIGHT and RUN end by restoring AUX (run_ends).
+          if (run_state == DdaState::kLeft) dp.step_x_by(s, at_limit ? n - 1 : n);
         }
         uint64_t clocks = static_cast<uint64_t>(at_limit ? n : n + 1);
         st.emitted += static_cast<uint64_t>(n);

@@ -63,7 +63,7 @@ class Had {
   // (run.covered_opaque()) gets the same update with nf and covered fixed. The HAD's state and the run are local
   // copies, which the compiler can keep in registers while pixels are written.
   template <typename Run>
-  void update_run(const Run& pixels, int layer) {
+  [[gnu::always_inline]] void update_run(const Run& pixels, int layer) {
     Run run = pixels;
     const View v = view();
     HadCounts counts = counts_;

@@ -20,7 +20,7 @@ struct HadSink {
     had.update(e.pixel, layer, e.covered);
   }
   template <typename Run>
-  void run(const Run& run_pixels) const {
+  [[gnu::always_inline]] void run(const Run& run_pixels) const {
     pixels += static_cast<uint64_t>(run_pixels.size());
     had.update_run(run_pixels, layer);
   }
