@@ -134,7 +134,10 @@ def speed(_):
                    f"{r['rtl_dda_clocks_per_s']:.2e} | {r['dda_alone_clocks_per_s']:.2e} | "
                    f"{r['rtl_dda_clocks_per_s'] / r['dda_alone_clocks_per_s']:.2f} |")
     if s.get("golden_vs_llvmpipe"):
-        out += ["", "golden against Mesa's llvmpipe, single-threaded, on the same triangles (median of 5 each; the "
+        pairs = s["golden_vs_llvmpipe"][0].get("pairs")
+        how = (f"{pairs} pairs run in turn: the times are the medians of each, the ratio the median of the pairs'"
+               if pairs else "median of 5 each")
+        out += ["", f"golden against Mesa's llvmpipe, single-threaded, on the same triangles ({how}; the "
                 "target: within 2x).", "", "| workload | pixels | golden wall s | llvmpipe s | golden / llvmpipe |",
                 "|---|---|---|---|---|"]
         for r in s["golden_vs_llvmpipe"]:
