@@ -17,6 +17,8 @@ ScreenMapRecorder::ScreenMapRecorder(const Params& p, size_t log_entries)
   // Allocated and touched here, before the run: no page faults in it.
   pending_.resize(log_entries_);
   pending_.clear();
+  miss_log_.resize(log_entries_);
+  miss_log_.clear();
 }
 
 void ScreenMapRecorder::begin_frame() {
@@ -36,14 +38,16 @@ void ScreenMapRecorder::page_change(uint32_t page) {
 void ScreenMapRecorder::end_triangle(uint64_t dda_cycles, uint64_t emitted) {
   const uint8_t waste = dda_cycles ? uint8_t(254 * (dda_cycles - std::min(emitted, dda_cycles)) / dda_cycles) : 0;
   if (run_.y >= 0) drawn_.push_back(run_);
-  if (pending_.size() + drawn_.size() + 1 > log_entries_) paint_pending();
+  if (pending_.size() + drawn_.size() + 1 > log_entries_) take_logs();
   for (const Run& r : drawn_) pending_.push_back(row_entry(r.y, r.lo, r.hi));
   pending_.push_back(kWasteTag | waste);
   drawn_.clear();
   run_ = Run{};
 }
 
-void ScreenMapRecorder::paint_pending() const {
+void ScreenMapRecorder::take_logs() const {
+  for (uint32_t page : miss_log_) ++m_.page_misses[page];
+  miss_log_.clear();
   size_t from = 0;  // the first row of the triangle being read
   for (size_t i = 0; i < pending_.size(); ++i) {
     if (!(pending_[i] & kWasteTag)) continue;

@@ -172,7 +172,7 @@ TEST_CASE("DDA emits each row of a triangle once, as one contiguous streak", "[d
   CHECK(rows > 80000);
 }
 
-// The waste map's rows (ScreenMapRecorder::drawn) against the DDA's pixels
+// The waste map's rows (ScreenMapRecorder::pixel) against the DDA's pixels
 // themselves, one recorder for triangle after triangle: each triangle
 // changes exactly the pixels it emitted (a row carried over from the one
 // before would change others), to its share of clocks that emitted no pixel,
@@ -195,8 +195,8 @@ TEST_CASE("the DDA-waste map paints exactly the pixels the DDA emitted", "[dda][
         d,
         [&](const DdaEmit& e) {
           emitted.insert({e.pixel.x, e.pixel.y});
-          rec->drawn(e.pixel.x, e.pixel.y);
-          small_log->drawn(e.pixel.x, e.pixel.y);
+          rec->pixel(e.pixel.x, e.pixel.y);  // drawn(), and the page misses the cache geometry gives
+          small_log->pixel(e.pixel.x, e.pixel.y);
         },
         [&](const DdaClock& c) {
           ++clocks;
@@ -213,8 +213,12 @@ TEST_CASE("the DDA-waste map paints exactly the pixels the DDA emitted", "[dda][
     ++checked;
   });
   CHECK(checked > 250);
-  // The same map, painted in batches as the log filled (and the rest now).
+  // The same maps, taken in batches as the logs filled (and the rest now).
   CHECK(small_log->maps().dda_waste == rec->maps().dda_waste);
+  CHECK(small_log->maps().page_misses == rec->maps().page_misses);
+  uint64_t misses = 0;
+  for (uint32_t m : rec->maps().page_misses) misses += m;
+  CHECK(misses > 1000);  // enough to fill the small log many times
 }
 
 TEST_CASE("DDA EP error stays within the rounding bound of the exact planes", "[dda][property]") {
