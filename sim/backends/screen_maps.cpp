@@ -14,6 +14,7 @@ ScreenMapRecorder::ScreenMapRecorder(const Params& p, size_t log_entries)
   m_.page_misses.assign(size_t(1) << layout_.page.number_bits, 0);
   m_.dda_waste.assign(size_t(p.screen_width) * size_t(p.screen_height), ScreenMaps::kNone);
   if (p.screen_width > 1024 || p.screen_height > 1024) throw std::logic_error("screen maps: the row log holds 10-bit X and Y");
+  if (log_entries_ == 0) throw std::logic_error("screen maps: an empty log");
   // Allocated and touched here, before the run: no page faults in it.
   pending_.resize(log_entries_);
   pending_.clear();
@@ -39,7 +40,11 @@ void ScreenMapRecorder::end_triangle(uint64_t dda_cycles, uint64_t emitted) {
   const uint8_t waste = dda_cycles ? uint8_t(254 * (dda_cycles - std::min(emitted, dda_cycles)) / dda_cycles) : 0;
   if (run_.y >= 0) drawn_.push_back(run_);
   if (pending_.size() + drawn_.size() + 1 > log_entries_) take_logs();
-  for (const Run& r : drawn_) pending_.push_back(row_entry(r.y, r.lo, r.hi));
+  for (const Run& r : drawn_) {
+    if (r.y < 0 || r.y >= m_.height || r.lo < 0 || r.hi >= m_.width)  // the DDA draws within the screen
+      throw std::logic_error("screen maps: a row off the screen");
+    pending_.push_back(row_entry(r.y, r.lo, r.hi));
+  }
   pending_.push_back(kWasteTag | waste);
   drawn_.clear();
   run_ = Run{};

@@ -66,6 +66,15 @@ class ScreenMapRecorder {
 
  private:
   void page_change(uint32_t page);  // a miss if the page's slot holds another
+  RtlLayout layout_;
+  std::vector<int64_t> slot_page_;  // -1: empty
+  int64_t last_page_ = -1;          // the page of the last pixel
+  struct Run {
+    int y = -1, lo = 0, hi = 0;
+  };
+  Run run_;                         // the triangle's pixels: the run being extended,
+  std::vector<Run> drawn_;          // and those before it
+
   // The maps are made from logs written in order: the waste map from the
   // triangles' rows, not row by row into the 1 MB map as each triangle
   // ends, and the page misses from the pages missed, not counted one by one
@@ -82,14 +91,6 @@ class ScreenMapRecorder {
   static uint32_t row_entry(int y, int lo, int hi) { return uint32_t(y) << 20 | uint32_t(lo) << 10 | uint32_t(hi); }
   mutable std::vector<uint32_t> pending_;
 
-  RtlLayout layout_;
-  std::vector<int64_t> slot_page_;  // -1: empty
-  int64_t last_page_ = -1;          // the page of the last pixel
-  struct Run {
-    int y = -1, lo = 0, hi = 0;
-  };
-  Run run_;                         // the triangle's pixels: the run being extended,
-  std::vector<Run> drawn_;          // and those before it
   mutable ScreenMaps m_;
 };
 

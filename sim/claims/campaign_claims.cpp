@@ -9,16 +9,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/text_format.hpp"
+
 namespace girtd {
 using json = nlohmann::json;
 
 namespace {
-
-std::string fmt(const char* f, double a, double b = 0, double c = 0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, f, a, b, c);
-  return buf;
-}
 
 struct Spread {
   double median = 0, min = 0, max = 0;
@@ -81,16 +77,16 @@ std::vector<ClaimRow> campaign_claims(const std::string& results_path) {
   const Spread w = spread(wait_ratio), ns = spread(wait_ns), share = spread(wait_share), r = spread(rates);
   std::vector<ClaimRow> rows;
   rows.push_back({wb_claim, wb_thesis,
-                  fmt("median %.2f (%.2f to %.2f) over ", w.median, w.min, w.max) + std::to_string(n) + " inputs",
+                  format_numbers("median %.2f (%.2f to %.2f) over ", w.median, w.min, w.max) + std::to_string(n) + " inputs",
                   std::fabs(w.median - 0.5) <= 0.05 * 0.5 ? "confirmed" : "refuted"});
   // A page wait under one base tick (5 ns) per pixel counts as every access a hit.
   rows.push_back({pf_claim, pf_thesis,
-                  fmt("waiting for pages: median %.1f ns per pixel (%.1f to %.1f); ", ns.median, ns.min, ns.max) +
-                      fmt("%.0f %% of the HAD's time (%.0f %% to %.0f %%)", 100 * share.median, 100 * share.min,
+                  format_numbers("waiting for pages: median %.1f ns per pixel (%.1f to %.1f); ", ns.median, ns.min, ns.max) +
+                      format_numbers("%.0f %% of the HAD's time (%.0f %% to %.0f %%)", 100 * share.median, 100 * share.min,
                           100 * share.max),
                   ns.median <= 5.0 ? "confirmed" : "refuted"});
   rows.push_back({rate_claim, rate_thesis,
-                  fmt("median %.1f Mpixel/s (%.1f to %.1f), sustained; the DDA clocks at 35 ns", r.median, r.min,
+                  format_numbers("median %.1f Mpixel/s (%.1f to %.1f), sustained; the DDA clocks at 35 ns", r.median, r.min,
                       r.max),
                   std::fabs(r.median - 40.0) <= 0.05 * 40.0 ? "confirmed" : "refuted"});
   return rows;

@@ -21,24 +21,18 @@
 #include "claims/ep_precision.hpp"
 #include "claims/numeric_limits.hpp"
 #include "io/subprocess.hpp"
+#include "io/text_format.hpp"
 #include "claims/thesis_losses.hpp"
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
 #include "config/rtl_layout.hpp"
 #include "common/input_error.hpp"
-#include "io/subprocess.hpp"
 #include "rtl/memory_measurements.hpp"
 #include "timing/stage_costs.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
 namespace {
-
-std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, f, a, b, c, d);
-  return buf;
-}
 
 // "confirmed" within 5 % of the thesis value, else "refuted".
 std::string verdict(double measured, double thesis) {
@@ -53,24 +47,24 @@ void dda_rows(const Params& p, std::vector<ClaimRow>& rows) {
       const EfficiencySample down = measure_equilateral(p, Orientation::kApexDown, q, ttl);
       const EfficiencySample rnd = measure_equilateral(p, Orientation::kRandom, q, ttl);
       const double mean_eff = (up.mean_efficiency + down.mean_efficiency) / 2;
-      const std::string cfg = fmt("Q = %g, ", q) + (ttl ? "+2 clocks/line (TTL)" : "same-cycle compare (ECL)");
+      const std::string cfg = format_numbers("Q = %g, ", q) + (ttl ? "+2 clocks/line (TTL)" : "same-cycle compare (ECL)");
       rows.push_back({"DDA efficiency, 200-px equilateral, " + cfg, "70 % (86 wasted states)",
-                      fmt("%.1f %% (up %.1f %%, %.0f..%.0f wasted; ", 100 * mean_eff, 100 * up.mean_efficiency,
+                      format_numbers("%.1f %% (up %.1f %%, %.0f..%.0f wasted; ", 100 * mean_eff, 100 * up.mean_efficiency,
                           up.min_wasted, up.max_wasted) +
-                          fmt("down %.1f %%, %.0f..%.0f wasted; random rot. %.1f %%)", 100 * down.mean_efficiency,
+                          format_numbers("down %.1f %%, %.0f..%.0f wasted; random rot. %.1f %%)", 100 * down.mean_efficiency,
                               down.min_wasted, down.max_wasted, 100 * rnd.mean_efficiency),
                       verdict(mean_eff, 0.70)});
       rows.push_back({"wasted states vs the per-edge formula, " + cfg, "apex up 95.9, apex down 77.3 (formula)",
-                      fmt("up %.1f (formula %.1f), down %.1f (formula %.1f)", up.mean_wasted, up.mean_thesis_wasted,
+                      format_numbers("up %.1f (formula %.1f), down %.1f (formula %.1f)", up.mean_wasted, up.mean_thesis_wasted,
                           down.mean_wasted, down.mean_thesis_wasted),
                       verdict(up.mean_wasted + down.mean_wasted, up.mean_thesis_wasted + down.mean_thesis_wasted)});
-      rows.push_back({"DDA pixel rate at " + fmt("%.0f ns, ", p.dda_clock_ns) + cfg, "20 Mpixel/s (200 px)",
-                      fmt("%.1f Mpixel/s (emitted %.0f px)", mean_eff * mhz, (up.mean_emitted + down.mean_emitted) / 2),
+      rows.push_back({"DDA pixel rate at " + format_numbers("%.0f ns, ", p.dda_clock_ns) + cfg, "20 Mpixel/s (200 px)",
+                      format_numbers("%.1f Mpixel/s (emitted %.0f px)", mean_eff * mhz, (up.mean_emitted + down.mean_emitted) / 2),
                       verdict(mean_eff * mhz, 20.0)});
     }
   }
-  rows.push_back({"DDA peak rate at " + fmt("%.0f ns", p.dda_clock_ns), "28 Mpixel/s",
-                  fmt("%.1f Mpixel/s (one pixel per clock)", mhz), verdict(mhz, 28.0)});
+  rows.push_back({"DDA peak rate at " + format_numbers("%.0f ns", p.dda_clock_ns), "28 Mpixel/s",
+                  format_numbers("%.1f Mpixel/s (one pixel per clock)", mhz), verdict(mhz, 28.0)});
 }
 
 void error_rows(const Params& p, std::vector<ClaimRow>& rows) {
@@ -78,10 +72,10 @@ void error_rows(const Params& p, std::vector<ClaimRow>& rows) {
   const double colour_bound = 1.0 + std::ldexp(1.0, -p.ep_color.frac_bits - 1);
   const double d_bound = 0.125 + std::ldexp(1.0, -p.ep_d.frac_bits - 1);
   rows.push_back({"error after <= 1024 steps, colour", "<= 1 colour LSB",
-                  fmt("max %.3f LSB over %.0f pixels (<= %.0f steps)", e.max_color_lsb, double(e.pixels), e.max_steps),
+                  format_numbers("max %.3f LSB over %.0f pixels (<= %.0f steps)", e.max_color_lsb, double(e.pixels), e.max_steps),
                   e.max_color_lsb <= colour_bound ? "confirmed" : "refuted"});
   rows.push_back({"error after <= 1024 steps, edge distance", "<= 0.125 px",
-                  fmt("max %.4f px", e.max_d_px), e.max_d_px <= d_bound ? "confirmed" : "refuted"});
+                  format_numbers("max %.4f px", e.max_d_px), e.max_d_px <= d_bound ? "confirmed" : "refuted"});
 }
 
 // A row per EP: is the hardware chapter's fraction width the fewest that
@@ -92,19 +86,19 @@ void precision_rows(const Params& p, std::vector<ClaimRow>& rows) {
     const std::string key = std::string("ep.") + ep_key(ep) + ".frac_bits";
     const std::string unit = ep_unit(ep);
     std::string verdict = "confirmed";
-    if (r.fewest_1024 < 0) verdict = fmt("refuted (needs more than %.0f bits)", r.configured + 8);
-    else if (r.fewest_1024 < r.configured) verdict = fmt("refuted (%.0f bits suffice)", r.fewest_1024);
-    else if (r.fewest_1024 > r.configured) verdict = fmt("refuted (needs %.0f bits)", r.fewest_1024);
-    rows.push_back({"fraction bits of EP " + std::string(ep_key(ep)) + " (" + key + fmt(" = %.0f)", r.configured),
-                    fmt(ep == EpKind::kD ? "<= %.3f px over 1024 steps" : "<= %.0f LSB over 1024 steps", ep_budget(ep)) +
+    if (r.fewest_1024 < 0) verdict = format_numbers("refuted (needs more than %.0f bits)", r.configured + 8);
+    else if (r.fewest_1024 < r.configured) verdict = format_numbers("refuted (%.0f bits suffice)", r.fewest_1024);
+    else if (r.fewest_1024 > r.configured) verdict = format_numbers("refuted (needs %.0f bits)", r.fewest_1024);
+    rows.push_back({"fraction bits of EP " + std::string(ep_key(ep)) + " (" + key + format_numbers(" = %.0f)", r.configured),
+                    format_numbers(ep == EpKind::kD ? "<= %.3f px over 1024 steps" : "<= %.0f LSB over 1024 steps", ep_budget(ep)) +
                         (ep == EpKind::kZ ? " (no budget stated for Z: 1 LSB of its 16-bit output assumed)" : "") +
                         " (+ half a fraction LSB: the start value's rounding)",
-                    (r.fewest_2048 < 0 ? fmt("fewest keeping it: %.0f bits over 1,024 steps, none up to %.0f over 2,048; ",
+                    (r.fewest_2048 < 0 ? format_numbers("fewest keeping it: %.0f bits over 1,024 steps, none up to %.0f over 2,048; ",
                                              r.fewest_1024, r.configured + 8)
-                                       : fmt("fewest keeping it: %.0f bits over 1,024 steps, %.0f over 2,048; ",
+                                       : format_numbers("fewest keeping it: %.0f bits over 1,024 steps, %.0f over 2,048; ",
                                              r.fewest_1024, r.fewest_2048)) +
-                        fmt("with %.0f: ", r.configured) + fmt("%.3f ", r.error_1024) + unit +
-                        fmt(" (1,024), %.3f ", r.error_2048) + unit + " (2,048); 2,000 random triangles",
+                        format_numbers("with %.0f: ", r.configured) + format_numbers("%.3f ", r.error_1024) + unit +
+                        format_numbers(" (1,024), %.3f ", r.error_2048) + unit + " (2,048); 2,000 random triangles",
                     verdict});
   }
 }
@@ -127,12 +121,12 @@ void limits_in_samples(const ConfigFiles& config, std::vector<ClaimRow>& rows) {
     ++inputs;
     hit += affected > 0;
     measured += std::string(measured.empty() ? "" : "; ") + std::filesystem::path(in).filename().string() + ": " +
-                fmt("%.0f of %.0f triangles, ", double(affected), r.at("triangles_drawn").get<double>()) +
-                fmt("%.0f seam pixels", r.at("pixels_reblended").get<double>());
+                format_numbers("%.0f of %.0f triangles, ", double(affected), r.at("triangles_drawn").get<double>()) +
+                format_numbers("%.0f seam pixels", r.at("pixels_reblended").get<double>());
   }
   std::filesystem::remove_all(dir);
   rows.push_back({"limits hit by the demo and sample models (golden)", "(not discussed)",
-                  fmt("%.0f of %.0f inputs hit a limit: ", hit, inputs) + measured, "measured"});
+                  format_numbers("%.0f of %.0f inputs hit a limit: ", hit, inputs) + measured, "measured"});
 }
 
 // Issue 17: where the formats stop drawing right, and how often real inputs get there.
@@ -140,18 +134,18 @@ void numerics_rows(const Params& p, const ConfigFiles& config, std::vector<Claim
   std::string growth;
   for (int steps : {256, 1024, 2048}) {
     const EpErrorSample e = measure_ep_error(p, 100, 1023, steps, 4242);
-    growth += std::string(growth.empty() ? "" : "; ") + fmt("<= %.0f steps: ", steps) +
-              fmt("colour %.3f, T %.3f, ", e.max_color_lsb, e.max_t_lsb) +
-              fmt("Z %.3f LSB, D %.4f px", e.max_z_lsb, e.max_d_px);
+    growth += std::string(growth.empty() ? "" : "; ") + format_numbers("<= %.0f steps: ", steps) +
+              format_numbers("colour %.3f, T %.3f, ", e.max_color_lsb, e.max_t_lsb) +
+              format_numbers("Z %.3f LSB, D %.4f px", e.max_z_lsb, e.max_d_px);
   }
   rows.push_back({"EP error growth with the steps walked (100 random triangles up to 1023 px)",
                   "grows by half an LSB of the derivative per step", growth, "measured"});
   std::string collapse;
   for (double area : {1e3, 1e2, 10.0, 1.0, 1e-6, 1e-12}) {
     const CollapseSample c = measure_collapse(p, area);
-    collapse += std::string(collapse.empty() ? "" : "; ") + fmt("area %g: ", area) +
-                fmt("%.0f dropped, ", double(c.dropped)) + fmt("%.0f clamped, ", double(c.clamped_values)) +
-                fmt("%.0f px, ", double(c.pixels)) + fmt("worst %.0f LSB", double(c.max_colour_error));
+    collapse += std::string(collapse.empty() ? "" : "; ") + format_numbers("area %g: ", area) +
+                format_numbers("%.0f dropped, ", double(c.dropped)) + format_numbers("%.0f clamped, ", double(c.clamped_values)) +
+                format_numbers("%.0f px, ", double(c.pixels)) + format_numbers("worst %.0f LSB", double(c.max_colour_error));
   }
   rows.push_back({"the preparer as a triangle's area goes to 0 (20 slivers, red 0..255 across the height)",
                   "(not discussed)", collapse, "measured"});
@@ -159,9 +153,9 @@ void numerics_rows(const Params& p, const ConfigFiles& config, std::vector<Claim
   far.far_edges_constant = true;
   const double safe = largest_safe_overhang(p), safe_far = largest_safe_overhang(far);
   rows.push_back({"D EPs' safe range: largest overhang of a screen-filling triangle drawn right",
-                  fmt("%.0f integer bits hold the screen", p.ep_d.int_bits),
-                  fmt("%.0f px beyond the screen; ", safe) +
-                      fmt("with preparer.far_edges constant: %.0f px (the corners at the input limit, 1e6)", safe_far),
+                  format_numbers("%.0f integer bits hold the screen", p.ep_d.int_bits),
+                  format_numbers("%.0f px beyond the screen; ", safe) +
+                      format_numbers("with preparer.far_edges constant: %.0f px (the corners at the input limit, 1e6)", safe_far),
                   safe >= 0 ? "confirmed" : "refuted"});
   limits_in_samples(config, rows);
 }
@@ -172,18 +166,18 @@ void thesis_rows(const Params& p, std::vector<ClaimRow>& rows) {
     const bool program = inside == ThesisInside::kProgram;
     rows.push_back({std::string("DDApix as written (appendix), ") + (program ? "its own D >= -1" : "sharp D >= 0"),
                     "fig. 4.2 visits every inside pixel",
-                    fmt("loses pixels on %.1f %% of %.0f random triangles (%.2f %% of inside pixels); ",
+                    format_numbers("loses pixels on %.1f %% of %.0f random triangles (%.2f %% of inside pixels); ",
                         100.0 * s.triangles_losing / std::max(1, s.triangles), s.triangles,
                         100.0 * double(s.lost_pixels) / double(std::max<uint64_t>(1, s.inside_pixels))) +
-                        fmt("%.0f emits past Xmin/Xmax", double(s.outside_limit_emits)),
+                        format_numbers("%.0f emits past Xmin/Xmax", double(s.outside_limit_emits)),
                     s.triangles_losing == 0 ? "confirmed" : "refuted"});
   }
   const ThesisEfficiency up = measure_thesis_equilateral(p, true), down = measure_thesis_equilateral(p, false);
   rows.push_back({"DDApix wasted states, 200-px equilateral on the 128 x 96 screen",
                   "apex up 95.9, apex down 77.3 (formula)",
-                  fmt("up %.1f (formula %.1f), down %.1f (formula %.1f); ", up.mean_wasted, up.mean_formula,
+                  format_numbers("up %.1f (formula %.1f), down %.1f (formula %.1f); ", up.mean_wasted, up.mean_formula,
                       down.mean_wasted, down.mean_formula) +
-                      fmt("efficiency %.1f %% / %.1f %%", 100 * up.mean_efficiency, 100 * down.mean_efficiency),
+                      format_numbers("efficiency %.1f %% / %.1f %%", 100 * up.mean_efficiency, 100 * down.mean_efficiency),
                   verdict(up.mean_wasted + down.mean_wasted, up.mean_formula + down.mean_formula)});
 }
 
@@ -200,8 +194,8 @@ void memory_rows(const Params& p, std::vector<ClaimRow>& rows) {
   const PageGeometry page = rtl_layout(p).page;
   const double f16 = p.had_access_ns + vram / page.width_px, f1 = p.had_access_ns + vram / page.height_px;
   rows.push_back({"cache time per pixel (RTL, directed streams)", "52.5 ns at nac = 16, 465 ns at nac = 1",
-                  fmt("nac = %.0f: %.1f ns (formula %.1f); ", page.width_px, row.ns_per_pixel, f16) +
-                      fmt("nac = %.0f: %.1f ns (formula %.1f)", page.height_px, col.ns_per_pixel, f1),
+                  format_numbers("nac = %.0f: %.1f ns (formula %.1f); ", page.width_px, row.ns_per_pixel, f16) +
+                      format_numbers("nac = %.0f: %.1f ns (formula %.1f)", page.height_px, col.ns_per_pixel, f1),
                   within_tick(row.ns_per_pixel, f16, p.base_tick_ns) == "confirmed" &&
                           within_tick(col.ns_per_pixel, f1, p.base_tick_ns) == "confirmed"
                       ? "confirmed"
@@ -210,19 +204,19 @@ void memory_rows(const Params& p, std::vector<ClaimRow>& rows) {
   no_cache.had_access_ns = p.base_tick_ns;
   const StreamTiming bare = time_stream(no_cache, PixelStream::kColumn);
   rows.push_back({"no-cache rate (every pixel a page read and write)", "2.27 Mpixel/s",
-                  fmt("%.2f Mpixel/s (%.1f ns per pixel)", 1e3 / bare.ns_per_pixel, bare.ns_per_pixel),
+                  format_numbers("%.2f Mpixel/s (%.1f ns per pixel)", 1e3 / bare.ns_per_pixel, bare.ns_per_pixel),
                   verdict(1e3 / bare.ns_per_pixel, 2.27)});
   Params wb = p;
   wb.had_write_behind = true;
   const StreamTiming wb_row = time_stream(wb, PixelStream::kRow);
   rows.push_back({"write-behind register (5.2.2), nac = 16", "halves VRAM time: 25 + 220/16 = 38.75 ns",
-                  fmt("%.1f ns per pixel (without: %.1f)", wb_row.ns_per_pixel, row.ns_per_pixel),
+                  format_numbers("%.1f ns per pixel (without: %.1f)", wb_row.ns_per_pixel, row.ns_per_pixel),
                   within_tick(wb_row.ns_per_pixel, p.had_access_ns + p.vram_cycle_ns / page.width_px, p.base_tick_ns)});
   Params pf = wb;
   pf.had_prefetch = true;
   const StreamTiming pf_row = time_stream(pf, PixelStream::kRow);
   rows.push_back({"prefetch + write-behind (5.2.2), nac = 16", "~100 % cache hits: ~25 ns per pixel (40 Mpixel/s)",
-                  fmt("%.1f ns per pixel; the DDA feeds one pixel per %.0f ns at best, and the look-ahead is only as "
+                  format_numbers("%.1f ns per pixel; the DDA feeds one pixel per %.0f ns at best, and the look-ahead is only as "
                       "deep as the FIFO holds",
                       pf_row.ns_per_pixel, p.dda_clock_ns),
                   within_tick(pf_row.ns_per_pixel, p.had_access_ns, p.base_tick_ns)});
@@ -231,9 +225,9 @@ void memory_rows(const Params& p, std::vector<ClaimRow>& rows) {
   double worst = 1e9;
   for (const char* t : {"traces/equilateral_200.trace", "traces/demo.trace", "traces/z_overlap.trace"}) {
     const TraceTiming a = time_trace(p, t), b = time_trace(wb, t), c = time_trace(pf, t);
-    rates += fmt("%.1f", a.mpixels_per_s()) + " (" + std::string(t).substr(7) + fmt(", nac %.1f); ", a.nac);
-    rates_wb += fmt("%.1f; ", b.mpixels_per_s());
-    rates_pf += fmt("%.1f; ", c.mpixels_per_s());
+    rates += format_numbers("%.1f", a.mpixels_per_s()) + " (" + std::string(t).substr(7) + format_numbers(", nac %.1f); ", a.nac);
+    rates_wb += format_numbers("%.1f; ", b.mpixels_per_s());
+    rates_pf += format_numbers("%.1f; ", c.mpixels_per_s());
     worst = std::min(worst, a.mpixels_per_s());
   }
   rows.push_back({"end-to-end rate, memory side as written (RTL back end)",
@@ -248,7 +242,7 @@ void memory_rows(const Params& p, std::vector<ClaimRow>& rows) {
     Params f = p;
     f.fifo_dda_had_depth = depth;
     const TraceTiming t = time_trace(f, "traces/demo.trace");
-    waits += fmt("depth %.0f: %.1f %% of DDA clocks; ", depth, 100 * t.dda_wait_fraction);
+    waits += format_numbers("depth %.0f: %.1f %% of DDA clocks; ", depth, 100 * t.dda_wait_fraction);
     if (depth == 16) {
       measured_16 = true;
       waits_at_16 = t.dda_wait_fraction > 0;
@@ -258,7 +252,7 @@ void memory_rows(const Params& p, std::vector<ClaimRow>& rows) {
                   "DDA waiting on a full FIFO: " + waits,
                   !measured_16 ? "not yet measured" : waits_at_16 ? "refuted" : "confirmed"});
   rows.push_back({"frame clear", "~108 us serial, 14 ms cache, 230 ms naive",
-                  fmt("serial port: %.1f us (cache and naive clears not modeled)", frame_clear_us(p)),
+                  format_numbers("serial port: %.1f us (cache and naive clears not modeled)", frame_clear_us(p)),
                   verdict(frame_clear_us(p), 108)});
 }
 
@@ -268,9 +262,9 @@ void preparer_rows(const Params& p, std::vector<ClaimRow>& rows) {
   const double target = p.target_preparer_triangles_per_s;
   const double prep_flops = preparer_ops(p).flops();
   rows.push_back({"preparer load", "40,000 triangles/s: 4.96 Mflop/s (124 flop; 172 from the parts, less 57 for the clip)",
-                  fmt("%.0f flop per triangle (the thesis' parts): %.2f Mflop/s at %.0f triangles/s; ", prep_flops,
+                  format_numbers("%.0f flop per triangle (the thesis' parts): %.2f Mflop/s at %.0f triangles/s; ", prep_flops,
                       prep_flops * target / 1e6, target) +
-                      fmt("at %.0f Mflop/s it can deliver %.0f triangles/s",
+                      format_numbers("at %.0f Mflop/s it can deliver %.0f triangles/s",
                           p.stage_rate_flops_per_s.at("preparer") / 1e6,
                           p.stage_rate_flops_per_s.at("preparer") / prep_flops),
                   prep_flops * target <= p.stage_flops_per_s ? "confirmed" : "refuted"});
@@ -296,14 +290,14 @@ void preparer_rows(const Params& p, std::vector<ClaimRow>& rows) {
     const nlohmann::json& st = r.at("stages").at(name.get<std::string>());
     if (!st.contains("flops") || st.at("flops").is_null()) continue;
     const double mflops = st.at("flops").get<double>() / triangles * target / 1e6;
-    need += name.get<std::string>() + fmt(" %.1f, ", mflops);
+    need += name.get<std::string>() + format_numbers(" %.1f, ", mflops);
     if (mflops > worst) {
       worst = mflops;
       worst_stage = name.get<std::string>();
     }
   }
   rows.push_back({"every stage within 10 Mflop/s at 40,000 triangles/s", "at most 10 Mflop/s per stage",
-                  "Mflop/s each stage needs on " + scene + " (" + fmt("%.0f", triangles) + " triangles, one light): " +
+                  "Mflop/s each stage needs on " + scene + " (" + format_numbers("%.0f", triangles) + " triangles, one light): " +
                       need + "most: " + worst_stage,
                   worst <= p.stage_flops_per_s / 1e6 ? "confirmed" : "refuted"});
 }

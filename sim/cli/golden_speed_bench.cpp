@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -26,45 +27,68 @@ GoldenSpeedBench run_golden_speed_bench(const Params& params, const ConfigFiles&
   GoldenSpeedBench b;
   const std::string dir = out_dir + "/golden_speed";
   fs::create_directories(dir);
-  b.markdown =
-      "\n## golden against Mesa's llvmpipe (single-threaded), 7 pairs\n\n"
-      "20,000 random opaque 200-pixel triangles (`tools/make_opaque_trace.py 20000`, Q = 0, Z test). golden: "
-      "report.json's `wall_s`, each render in its own process; llvmpipe: clear to `glFinish` through OSMesa "
-      "(`LP_NUM_THREADS=0`), after one untimed draw of the same triangles in the same context (its shaders "
-      "compiled). Both from the triangles in memory to the final colour and Z buffers. The two run in turn, "
-      "pair by pair; the times are the medians of each, the ratio the median of the pairs' ratios.\n\n"
-      "| workload | pixels | golden wall s | llvmpipe s | golden / llvmpipe | within 2x |\n"
-      "|---|---|---|---|---|---|\n";
-  const std::string trace = dir + "/opaque_20000.trace";
-  if (run_process({"python3", "tools/make_opaque_trace.py", std::to_string(kTriangles), "--out", trace}, false) != 0) {
+  b.markdown = "\n## golden against Mesa's llvmpipe (single-threaded), " + std::to_string(kRuns) +
+               " pairs\n\n"
+               "20,000 random opaque 200-pixel triangles (`tools/make_opaque_trace.py 20000`, Q = 0, Z test). golden: "
+               "report.json's `wall_s`, each render in its own process; llvmpipe: clear to `glFinish` through OSMesa "
+               "(`LP_NUM_THREADS=0`), after one untimed draw of the same triangles in the same context (its shaders "
+               "compiled). Both from the triangles in memory to the final colour and Z buffers. The two run in turn, "
+               "pair by pair, each first every other time; the times are the medians of each, the ratio the median "
+               "of the pairs' ratios.\n\n"
+               "| workload | pixels | golden wall s | llvmpipe s | golden / llvmpipe | within 2x |\n"
+               "|---|---|---|---|---|---|\n";
+  auto fail = [&b](const std::string& what) {
+    std::fprintf(stderr, "bench: %s\n", what.c_str());
     ++b.failures;
-    b.markdown += "| the workload could not be made (tools/make_opaque_trace.py) |\n";
+    b.markdown += "| " + what + " |\n";
     return b;
-  }
-  // Pair by pair, golden's render then llvmpipe's draw: a burst of load on
-  // this shared host then weighs on both sides of a pair, not on one side
-  // of the whole comparison. The ratio is the median of the pairs'.
-  std::vector<double> golden, llvmpipe, ratios;
-  nlohmann::json r;
+  };
+  const std::string trace = dir + "/opaque_20000.trace";
+  if (run_process({"python3", "tools/make_opaque_trace.py", std::to_string(kTriangles), "--out", trace}, false) != 0)
+    return fail("the workload could not be made (tools/make_opaque_trace.py)");
+  std::vector<Triangle> triangles;
+  Rgb background;
   try {
     const Trace t = read_trace(trace, std::nullopt, params);
-    for (int i = 0; i < kRuns; ++i) {
-      r = render_in_child(trace, "golden", dir + "/golden", config);
-      if (r.is_null()) break;
-      golden.push_back(r.at("wall_s"));
-      llvmpipe.push_back(render_llvmpipe(t.frames.at(0).triangles, params.screen_width, params.screen_height,
-                                         t.frames[0].settings.background, static_cast<uint16_t>(params.depth_clear))
-                             .draw_s);
-      ratios.push_back(llvmpipe.back() > 0 ? golden.back() / llvmpipe.back() : 0);
-    }
+    triangles = t.frames.at(0).triangles;
+    background = t.frames[0].settings.background;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "bench: llvmpipe: %s\n", e.what());
-    llvmpipe.clear();
+    return fail(std::string("the workload could not be read: ") + e.what());
   }
-  if (r.is_null() || llvmpipe.size() < kRuns) {
-    ++b.failures;
-    b.markdown += r.is_null() ? "| golden's render failed |\n" : "| llvmpipe failed |\n";
-    return b;
+  // Pair by pair, golden's render and llvmpipe's draw, each first every
+  // other time: a burst of load on this shared host then weighs on both
+  // sides of a pair, not on one side of the whole comparison.
+  nlohmann::json r;
+  std::string problem;
+  auto golden_s = [&]() -> std::optional<double> {
+    r = render_in_child(trace, "golden", dir + "/golden", config);
+    if (r.is_null() || !r.contains("wall_s")) problem = "golden's render failed";
+    return problem.empty() ? std::optional<double>(r.at("wall_s").get<double>()) : std::nullopt;
+  };
+  auto llvmpipe_s = [&]() -> std::optional<double> {
+    try {
+      return render_llvmpipe(triangles, params.screen_width, params.screen_height, background,
+                             static_cast<uint16_t>(params.depth_clear))
+          .draw_s;
+    } catch (const std::exception& e) {
+      problem = std::string("llvmpipe failed: ") + e.what();
+      return std::nullopt;
+    }
+  };
+  std::vector<double> golden, llvmpipe, ratios;
+  for (int i = 0; i < kRuns; ++i) {
+    std::optional<double> g, l;
+    if (i % 2 == 0) {
+      g = golden_s();
+      if (g) l = llvmpipe_s();
+    } else {
+      l = llvmpipe_s();
+      if (l) g = golden_s();
+    }
+    if (!g || !l) return fail(problem);
+    golden.push_back(*g);
+    llvmpipe.push_back(*l);
+    ratios.push_back(*l > 0 ? *g / *l : 0);
   }
   const double g = median(golden), l = median(llvmpipe), ratio = median(ratios);
   const bool within = ratio > 0 && ratio <= kWithin;

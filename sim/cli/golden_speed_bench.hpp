@@ -1,10 +1,11 @@
 // golden against Mesa's llvmpipe (`girtd bench --speed`; issue "Simulator
 // speed": golden within 2x of single-threaded llvmpipe): 20,000 random
 // opaque 200-pixel triangles (tools/make_opaque_trace.py, Q = 0, Z test),
-// golden's report.json `wall_s` (median of 5 renders, each in its own
-// process) against llvmpipe's clear-to-glFinish time on the same triangles
-// (sim/accuracy/llvmpipe_render.*, median of 5). Both count the triangles in
-// memory to the final colour and Z buffers, the clear included.
+// golden's report.json `wall_s` (each render in its own process) against
+// llvmpipe's clear-to-glFinish time on the same triangles
+// (sim/accuracy/llvmpipe_render.*), in pairs run in turn; the ratio is the
+// median of the pairs'. Both count the triangles in memory to the final
+// colour and Z buffers, the clear included.
 #pragma once
 
 #include <string>

@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/output_set.hpp"
 #include "common/input_error.hpp"
+#include "io/json_file.hpp"
 #include "io/png_io.hpp"
 #include "io/subprocess.hpp"
 #include "backends/front_end_runner.hpp"
@@ -54,11 +55,6 @@ std::string render_child(const std::string& input, const std::string& backend, c
   return backend + ": exit " + std::to_string(rc) + ": " + first_line(log);
 }
 
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
-
 CaseResult run_case(const StressCase& c, const std::string& dir, const ConfigFiles& config, const Params& params,
                     double timeout_s) {
   CaseResult r;
@@ -74,20 +70,20 @@ CaseResult run_case(const StressCase& c, const std::string& dir, const ConfigFil
   };
   for (const char* b : {"reference", "golden", "rtl"})
     if (const std::string e = render_child(input, b, dir + "/" + b, config, timeout_s); !e.empty()) return fail(e);
-  const nlohmann::json golden = read_json(dir + "/golden/report.json");
+  const nlohmann::json golden = read_json_file(dir + "/golden/report.json");
   for (size_t k = 0; k < c.reorders.size(); ++k) {  // order: every vertex order draws one picture
     const std::string v = dir + "/order_" + std::to_string(k + 1);
     std::ofstream(v + ".trace") << c.reorders[k];
     if (const std::string e = render_child(v + ".trace", "golden", v, config, timeout_s); !e.empty()) return fail(e);
-    if (read_json(v + "/report.json").at("image_sha256") != golden.at("image_sha256"))
+    if (read_json_file(v + "/report.json").at("image_sha256") != golden.at("image_sha256"))
       return fail("vertex order " + std::to_string(k + 2) + " of 6 draws another picture");
   }
   // The triangles as drawn: a scene's from the front end, here in-process
   // (its dump may hold corners past the trace format's 1e6 px).
   const Trace drawn = c.scene ? run_front_end(read_scene(input, params), params, PrunePlan{}).triangles
                               : read_trace(input, std::nullopt, params);
-  r.j = judge_stress_case(drawn, params, read_json(dir + "/reference/report.json"), golden,
-                          read_json(dir + "/rtl/report.json"), read_png_rgb(dir + "/reference/frame.png"),
+  r.j = judge_stress_case(drawn, params, read_json_file(dir + "/reference/report.json"), golden,
+                          read_json_file(dir + "/rtl/report.json"), read_png_rgb(dir + "/reference/frame.png"),
                           read_png_rgb(dir + "/golden/frame.png"));
   r.seams = golden.value("pixels_reblended", uint64_t{0});
   if (golden.at("numerics").is_object())

@@ -29,6 +29,7 @@
 #include "common/file_text.hpp"
 #include "common/input_error.hpp"
 #include "io/input_reader.hpp"
+#include "io/json_file.hpp"
 #include "io/sha256.hpp"
 #include "io/subprocess.hpp"
 #include "sweep/sweep_points.hpp"
@@ -60,11 +61,6 @@ struct Task {
 std::string row_tag(const std::string& input, const SweepSpec& spec, bool repeat) {
   const std::string key = input + "|" + spec.backend + "|" + std::to_string(repeat ? spec.repeat : 1);
   return sha256_hex(key).substr(0, 8);
-}
-
-json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in);
 }
 
 void write_json_atomically(const fs::path& p, const json& j) {
@@ -302,7 +298,7 @@ int run_sweep(const SweepArgs& a) {
       for (const Task& t : tasks) {
         if (t.point != p) continue;
         const fs::path file = dir / "rows" / (t.id + ".json");
-        json row = read_json(file);
+        json row = read_json_file(file);
         if (row["rtl_agrees"].is_null() && row["valid"].get<bool>()) {
           spot_check(t, row, spec, dir);
           write_json_atomically(file, row);
@@ -317,7 +313,7 @@ int run_sweep(const SweepArgs& a) {
 
   json rows = json::array();
   for (const Task& t : tasks) {
-    json row = read_json(dir / "rows" / (t.id + ".json"));
+    json row = read_json_file(dir / "rows" / (t.id + ".json"));
     const json now = base_row(t);  // this spec's axis names and cost model over a kept row's
     for (const std::string& k : {std::string("point"), std::string("input")}) row[k] = now[k];
     for (const auto& [k, v] : t.point->axis_values.items()) row[k] = v;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "io/csv_field.hpp"
+#include "io/text_format.hpp"
 
 namespace girtd {
 
@@ -17,12 +18,6 @@ std::string text(const json& v) {
   if (v.is_null()) return "";
   if (v.is_string()) return v.get<std::string>();
   return v.dump();
-}
-
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
 }
 
 }  // namespace
@@ -108,7 +103,7 @@ SweepSummary summarize_sweep(const json& rows, const std::vector<std::string>& a
     for (const std::string& a : axes) line += text(p[a]) + " | ";
     std::string b;
     for (const json& x : p["bottlenecks"]) b += (b.empty() ? "" : ", ") + x.get<std::string>();
-    line += fmt("%.0f", p["cost"].get<double>()) + " | " + fmt("%.2f", p["min_mpixels_per_s"].get<double>()) + " | " +
+    line += format_numbers("%.0f", p["cost"].get<double>()) + " | " + format_numbers("%.2f", p["min_mpixels_per_s"].get<double>()) + " | " +
             (p["meets_target"].get<bool>() ? "yes" : "") + " | " + b + " | " +
             (p["rtl_agrees"].is_null() ? "" : p["rtl_agrees"].get<bool>() ? "agrees" : "**DISAGREES**") + " |\n";
     return line;
@@ -134,7 +129,7 @@ SweepSummary summarize_sweep(const json& rows, const std::vector<std::string>& a
   head << valid.size() << " valid point(s), " << invalid << " invalid; " << front.size() << " on the front; ";
   if (meeting.empty()) head << "none meets the target on every input\n";
   else head << meeting.size() << " meet the target, the cheapest " << meeting.front()["point"].get<std::string>()
-            << " (cost " << fmt("%.0f", meeting.front()["cost"].get<double>()) << ")\n";
+            << " (cost " << format_numbers("%.0f", meeting.front()["cost"].get<double>()) << ")\n";
   s.headline = head.str();
   return s;
 }
