@@ -107,7 +107,8 @@ def pruning(b):
            f"{span([r['speedup'] for r in poly], '{:.2f}x')} on the {len(poly)} polygon-level inputs (median "
            f"{sorted(r['speedup'] for r in poly)[len(poly) // 2]:.2f}x), "
            f"{span([r['speedup'] for r in rows if r not in poly], '{:.2f}x')} on the triangle and DDA "
-           f"traces (the wrap detector only)"
+           f"traces (what they leave out: "
+           f"{', '.join(sorted({u['unit'] for r in rows if r not in poly for u in r.get('left_out', [])})) or 'nothing'})"
            + (f"; `out_of_view.json` {oov['speedup']:.2f}x ({oov['no_prune_wall_s']:.3f} s against "
               f"{oov['pruned_wall_s']:.3f} s)." if oov else ".")]
     c = b.get("pruning_ceiling")
