@@ -20,7 +20,7 @@ struct LeaveOutBench {
   std::string markdown;
   nlohmann::json culling = nlohmann::json::array();
   nlohmann::json pruning = nlohmann::json::array();
-  nlohmann::json pruning_ceiling;  // the most pruning could save on the mostly-out-of-view scene
+  nlohmann::json pruning_ceiling;  // the most leaving out the out-of-view objects could save (both runs --no-prune)
   int failures = 0;  // a render that failed, or pruning that changed an output
 };
 
