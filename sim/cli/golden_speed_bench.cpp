@@ -2,7 +2,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -55,41 +54,35 @@ GoldenSpeedBench run_golden_speed_bench(const Params& params, const ConfigFiles&
   } catch (const std::exception& e) {
     return fail(std::string("the workload could not be read: ") + e.what());
   }
-  // Pair by pair, golden's render and llvmpipe's draw, each first every
-  // other time: a burst of load on this shared host then weighs on both
-  // sides of a pair, not on one side of the whole comparison.
+  // Pair by pair (run_pairs), golden's render and llvmpipe's draw: a burst
+  // of load on this shared host then weighs on both sides of a pair, not on
+  // one side of the whole comparison.
   nlohmann::json r;
   std::string problem;
-  auto golden_s = [&]() -> std::optional<double> {
+  std::vector<double> golden, llvmpipe, ratios;
+  auto golden_run = [&] {
     r = render_in_child(trace, "golden", dir + "/golden", config);
-    if (r.is_null() || !r.contains("wall_s")) problem = "golden's render failed";
-    return problem.empty() ? std::optional<double>(r.at("wall_s").get<double>()) : std::nullopt;
+    if (r.is_null() || !r.contains("wall_s")) {
+      problem = "golden's render failed";
+      return false;
+    }
+    golden.push_back(r.at("wall_s").get<double>());
+    return true;
   };
-  auto llvmpipe_s = [&]() -> std::optional<double> {
+  auto llvmpipe_run = [&] {
     try {
-      return render_llvmpipe(triangles, params.screen_width, params.screen_height, background,
-                             static_cast<uint16_t>(params.depth_clear))
-          .draw_s;
+      llvmpipe.push_back(render_llvmpipe(triangles, params.screen_width, params.screen_height, background,
+                                         static_cast<uint16_t>(params.depth_clear))
+                             .draw_s);
+      return true;
     } catch (const std::exception& e) {
       problem = std::string("llvmpipe failed: ") + e.what();
-      return std::nullopt;
+      return false;
     }
   };
-  std::vector<double> golden, llvmpipe, ratios;
-  for (int i = 0; i < kRuns; ++i) {
-    std::optional<double> g, l;
-    if (i % 2 == 0) {
-      g = golden_s();
-      if (g) l = llvmpipe_s();
-    } else {
-      l = llvmpipe_s();
-      if (l) g = golden_s();
-    }
-    if (!g || !l) return fail(problem);
-    golden.push_back(*g);
-    llvmpipe.push_back(*l);
-    ratios.push_back(*l > 0 ? *g / *l : 0);
-  }
+  if (!run_pairs(kRuns, golden_run, llvmpipe_run,
+                 [&] { ratios.push_back(llvmpipe.back() > 0 ? golden.back() / llvmpipe.back() : 0); }))
+    return fail(problem);
   const double g = median(golden), l = median(llvmpipe), ratio = median(ratios);
   const bool within = ratio > 0 && ratio <= kWithin;
   const double pixels = r.at("pixels_generated").get<double>();
