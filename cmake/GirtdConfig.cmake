@@ -12,7 +12,7 @@ function(girtd_generate_config_header json_file out_header)
   configure_file(${CMAKE_SOURCE_DIR}/cmake/default_config.hpp.in ${out_header} @ONLY)
 endfunction()
 
-# The SystemVerilog side: girtd_gen_rtl (models/config/gen_rtl_main.cpp)
+# The SystemVerilog side: girtd_gen_rtl (models/layout/gen_rtl_main.cpp)
 # writes the package, the PROM table and rtl_build.hpp from the merged
 # configuration, with the same C++ that derives every layout for the models
 # (one definition). Verilator runs at configure time (verilate()), so the
@@ -23,9 +23,11 @@ endfunction()
 # default build.
 function(girtd_generate_rtl_package out_dir)
   set(src ${CMAKE_SOURCE_DIR}/models)
-  set(sources ${src}/config/gen_rtl_main.cpp ${src}/config/params.cpp ${src}/config/config_layers.cpp
-              ${src}/config/rtl_layout.cpp ${src}/config/rtl_package.cpp)
-  file(GLOB headers ${src}/config/*.hpp ${src}/common/*.hpp ${src}/dda/*.hpp)
+  set(sources ${src}/layout/gen_rtl_main.cpp ${src}/config/params.cpp ${src}/config/config_layers.cpp
+              ${src}/layout/rtl_layout.cpp ${src}/layout/rtl_package.cpp ${src}/fifo/fifo_word.cpp
+              ${src}/cache/cache_geometry.cpp ${src}/vram/vram_word.cpp)
+  file(GLOB headers ${src}/config/*.hpp ${src}/common/*.hpp ${src}/dda/*.hpp ${src}/layout/*.hpp
+                    ${src}/fifo/*.hpp ${src}/cache/*.hpp ${src}/vram/*.hpp)
   set(tool ${CMAKE_BINARY_DIR}/generated/girtd_gen_rtl)
   set(stale FALSE)
   if(NOT EXISTS ${tool})

@@ -59,7 +59,7 @@ module had (
   localparam int CO = girtd_pkg::COLOR_OUT, ZO = girtd_pkg::Z_OUT, NFW = girtd_pkg::NF_W;
 
   // The page of a pixel, {Y[SB-1:YB], X[SB-1:XB]}, and its place in the page,
-  // {Y[YB-1:0], X[XB-1:0]} (models/config/rtl_layout.hpp, PageGeometry).
+  // {Y[YB-1:0], X[XB-1:0]} (models/layout/rtl_layout.hpp, PageGeometry).
   function automatic logic [NW-1:0] page_number(input logic [SB-1:0] x, input logic [SB-1:0] y);
     page_number = NW'(((32'(y) >> YB) << (SB - XB)) | (32'(x) >> XB));
   endfunction

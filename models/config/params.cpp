@@ -7,7 +7,7 @@
 
 #include "common/input_error.hpp"
 #include "config/config_layers.hpp"
-#include "config/rtl_layout.hpp"
+#include "config/rtl_widths.hpp"
 
 namespace girtd {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "config/rtl_layout.hpp"
+#include "layout/rtl_layout.hpp"
 
 namespace girtd {
 

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "config/params.hpp"
-#include "config/rtl_layout.hpp"
+#include "layout/rtl_layout.hpp"
 #include "had/had.hpp"
 #include "timing/memory_side_ticks.hpp"
 #include "timing/tick_window.hpp"

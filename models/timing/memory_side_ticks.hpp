@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "config/params.hpp"
-#include "config/rtl_layout.hpp"
+#include "layout/rtl_layout.hpp"
 #include "had/had.hpp"
 
 namespace girtd {

@@ -1,23 +1,35 @@
 #include "accuracy/accuracy_levels.hpp"
 
 #include <cstdlib>
+#include <stdexcept>
 
 #include "common/input_error.hpp"
 
 namespace girtd {
 
 namespace {
+
 constexpr const char* kSampledPrefix = "approx_sampled_";
+
+// The first back end whose capabilities include `has` and exclude `lacks`.
+const BackendEntry& first_with(const std::vector<BackendEntry>& backends, unsigned has, unsigned lacks) {
+  for (const BackendEntry& b : backends)
+    if ((b.capabilities & has) == has && !(b.capabilities & lacks)) return b;
+  throw std::logic_error("the back-end registry has no entry for an accuracy level");
 }
 
-AccuracyLevel accuracy_level(const std::string& name) {
-  if (name == "rtl" || name == "approx" || name == "golden" || name == "reference") return {name, name, {}, true};
-  if (name == "dda_bound") return {name, "golden", {}, true};
+}  // namespace
+
+AccuracyLevel accuracy_level(const std::string& name, const std::vector<BackendEntry>& backends) {
+  for (const BackendEntry& b : backends)
+    if (b.name == name) return {name, name, {}, true, b.has(kExactPicture), b.has(kExactTiming)};
+  if (name == "dda_bound") return {name, first_with(backends, kDrawsWithDda, kModelsTime).name, {}, true};
   if (name.rfind(kSampledPrefix, 0) == 0) {
     const std::string rate = name.substr(std::string(kSampledPrefix).size());
     char* end = nullptr;
     const double r = std::strtod(rate.c_str(), &end);
-    if (!rate.empty() && *end == '\0' && r > 0 && r < 1) return {name, "approx", {"--sample-timing", rate}, false};
+    if (!rate.empty() && *end == '\0' && r > 0 && r < 1)
+      return {name, first_with(backends, kSamplesTiming, 0).name, {"--sample-timing", rate}, false};
     throw InputError("--backends", 0, "'" + name + "': the sampling rate must be a number in (0, 1), e.g. approx_sampled_0.1");
   }
   throw InputError("--backends", 0,

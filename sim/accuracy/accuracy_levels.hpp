@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "backends/backend_entry.hpp"
+
 namespace girtd {
 
 struct AccuracyLevel {
@@ -16,10 +18,15 @@ struct AccuracyLevel {
   std::string backend;  // the render's back end
   std::vector<std::string> render_args;
   bool draws_frame = true;  // false: the frame is incomplete (sampled timing), no picture error
+  bool picture_yardstick = false;  // the back end pictures are judged against (kExactPicture)
+  bool timing_yardstick = false;   // the back end modeled time is judged against (kExactTiming)
 };
 
-// Throws InputError("--backends", ...) for an unknown name.
-AccuracyLevel accuracy_level(const std::string& name);
+// A back end's name, dda_bound (the untimed back end with a DDA: its clocks
+// times the period) or approx_sampled_<rate> (the back end that samples
+// timing); `backends`: the registry. Throws InputError("--backends", ...)
+// for an unknown name.
+AccuracyLevel accuracy_level(const std::string& name, const std::vector<BackendEntry>& backends);
 // The default list: rtl, approx, dda_bound and approx sampled at 1/10 and 1/50.
 std::vector<std::string> default_accuracy_levels();
 

@@ -101,16 +101,16 @@ json counter_summary(const json& rows) {
   return out;
 }
 
-json rtl_agreement(const json& rows) {
+json rtl_agreement(const json& rows, const std::string& yardstick, const std::string& exact) {
   std::map<std::pair<std::string, std::string>, std::string> rtl_sha;
   for (const json& r : rows)
-    if (r["level"] == "rtl" && r.contains("image_sha256")) rtl_sha[{r["input"], r["variant"]}] = r["image_sha256"];
+    if (r["level"] == yardstick && r.contains("image_sha256")) rtl_sha[{r["input"], r["variant"]}] = r["image_sha256"];
   json out = json::array();
   for (const auto& [key, sha] : rtl_sha) {
     json levels = json::array();
     bool agrees = true;
     for (const json& r : rows)
-      if (r["input"] == key.first && r["variant"] == key.second && r["level"] != "rtl" && r["level"] != "reference" &&
+      if (r["input"] == key.first && r["variant"] == key.second && r["level"] != yardstick && r["level"] != exact &&
           r.value("complete", false) && r.contains("image_sha256")) {
         levels.push_back(r["level"]);
         agrees = agrees && r["image_sha256"] == sha;

@@ -20,9 +20,11 @@ nlohmann::json level_summary(const nlohmann::json& rows);
 // Per level and counter: mean and maximum relative difference from rtl.
 nlohmann::json counter_summary(const nlohmann::json& rows);
 
-// Per input x variant with an rtl row: does every other complete level's
-// frame equal rtl's, byte for byte (golden, approx and rtl draw one picture)?
-nlohmann::json rtl_agreement(const nlohmann::json& rows);
+// Per input x variant with a row of the timing yardstick (`yardstick`, the
+// RTL): does every other complete level's frame equal its, byte for byte
+// (golden, approx and rtl draw one picture)? The picture yardstick
+// (`exact`, double precision) is not compared.
+nlohmann::json rtl_agreement(const nlohmann::json& rows, const std::string& yardstick, const std::string& exact);
 
 std::string accuracy_markdown(const nlohmann::json& rows, const nlohmann::json& levels, const nlohmann::json& counters,
                               const nlohmann::json& agreement);

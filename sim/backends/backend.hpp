@@ -1,5 +1,6 @@
-// A back end draws the primitives of one frame into the HAD. The CLI's
-// --backend picks one; the render session around it is shared.
+// An untimed back end draws the primitives of one frame into the HAD. The
+// registry (engine/backend_registry.hpp) makes one; the render session
+// around it is shared.
 #pragma once
 
 #include <functional>
@@ -34,12 +35,6 @@ class Backend {
   // What the simulator may leave out (backends/prune_plan.hpp), before begin().
   virtual void prune(const PrunePlan& plan) { (void)plan; }
 };
-
-// "reference" or "golden" (approx and rtl are the pipeline's: sim/pipeline).
-std::unique_ptr<Backend> make_backend(const std::string& name, const Params& params);
-
-// Every --backend name.
-std::vector<std::string> known_backends();
 
 // The hardware's Norm is a shift: every frame's Q must be 0 or a power of
 // two 1/16..8 (InputError at the line that set it).

@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "pipeline/time_series.hpp"
+#include "timeline/time_series.hpp"
 #include "timing/backend_timing.hpp"
 #include "timing/tick_window.hpp"
 

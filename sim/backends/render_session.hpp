@@ -10,7 +10,7 @@
 #include "backends/dump_tap.hpp"
 #include "backends/prune_plan.hpp"
 #include "common/input_error.hpp"
-#include "wave/wave_options.hpp"
+#include "timeline/wave_options.hpp"
 #include "had/frame_buffer.hpp"
 #include "io/png_io.hpp"
 #include "io/trace.hpp"

@@ -31,7 +31,7 @@ struct StageStats {
   // Timed back ends, for the report page's timelines: the SystemC stages'
   // starved, busy and blocked seconds per bin of `series_bin_s`, and the
   // FIFO in front's largest occupancy per bin of `fifo_in_bin_s`
-  // (sim/pipeline/time_series.hpp). Empty where not sampled.
+  // (sim/timeline/time_series.hpp). Empty where not sampled.
   double series_bin_s = 0;
   std::vector<std::array<double, 3>> series;
   double fifo_in_bin_s = 0;

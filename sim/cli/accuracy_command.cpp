@@ -11,6 +11,7 @@
 #include "report/accuracy_page.hpp"
 #include "accuracy/accuracy_levels.hpp"
 #include "accuracy/accuracy_table.hpp"
+#include "engine/backend_registry.hpp"
 #include "accuracy/config_variants.hpp"
 #include "accuracy/llvmpipe_render.hpp"
 #include "claims/ep_precision.hpp"
@@ -136,9 +137,10 @@ std::string slug(const std::string& s) {
 
 int run_accuracy(const AccuracyArgs& a) {
   const std::vector<std::string> inputs = a.inputs.empty() ? read_input_list(kDefaultInputs) : a.inputs;
-  std::vector<AccuracyLevel> levels = {accuracy_level("reference")};  // the yardstick, run first
+  const std::string& exact = backend_with(kExactPicture).name, &yardstick = backend_with(kExactTiming).name;
+  std::vector<AccuracyLevel> levels = {accuracy_level(exact, backend_registry())};  // the picture yardstick, run first
   for (const std::string& name : a.levels.empty() ? default_accuracy_levels() : a.levels)
-    if (name != "reference") levels.push_back(accuracy_level(name));
+    if (name != exact) levels.push_back(accuracy_level(name, backend_registry()));
   const std::vector<ConfigVariant> variants = config_variants(a.vary);
   // Bad usage and bad input are found before anything runs or is written.
   const Params base_params = load_params(a.config);
@@ -215,11 +217,11 @@ int run_accuracy(const AccuracyArgs& a) {
         if (level.draws_frame) {
           const Frame frame = read_frame(dir);
           const uint16_t z_clear = static_cast<uint16_t>(params->depth_clear);
-          if (level.name == "reference") reference = frame;
+          if (level.picture_yardstick) reference = frame;
           if (reference) row["image"] = picture_error(frame, *reference, z_clear);
           if (llvmpipe) row["llvmpipe"] = picture_error(frame, *llvmpipe, z_clear);
         }
-        if (level.name == "rtl" && modeled) {
+        if (level.timing_yardstick && modeled) {
           rtl_time = modeled;
           rtl_counters = row["counters"];
         }
@@ -237,7 +239,7 @@ int run_accuracy(const AccuracyArgs& a) {
         if (!row["modeled_time_s"].is_null())
           row["time_error"] = (row["modeled_time_s"].get<double>() - *rtl_time) / *rtl_time;
         // Counts of a complete run only: a sampled one counts its sample.
-        if (row["level"] != "rtl" && row["level"] != "reference" && row["complete"].get<bool>())
+        if (row["level"] != yardstick && row["level"] != exact && row["complete"].get<bool>())
           row["counter_error"] = relative_differences(row["counters"], rtl_counters);
       }
     }
@@ -245,7 +247,7 @@ int run_accuracy(const AccuracyArgs& a) {
 
   const json level_table = level_summary(rows);
   const json counter_table = counter_summary(rows);
-  const json agreement = rtl_agreement(rows);
+  const json agreement = rtl_agreement(rows, yardstick, exact);
   OutputSet files(a.out_dir);
   std::string command = "girtd accuracy";  // what regenerates this run (the README quotes it)
   for (const std::string& i : a.inputs) command += " " + i;

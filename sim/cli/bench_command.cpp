@@ -15,6 +15,7 @@
 
 #include "accuracy/accuracy_table.hpp"
 #include "backends/render_session.hpp"
+#include "engine/backend_registry.hpp"
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
 #include "cli/output_set.hpp"
@@ -99,10 +100,15 @@ int run_bench(const BenchArgs& a) {
   for (const std::string& path : sample_traces_at({TraceLevel::kTriangle})) {
     const Trace trace = read_trace(path, std::nullopt, params);
     RenderOutput reference;
-    for (const std::string name : {"reference", "golden"}) {
-      auto backend = make_backend(name, params);
+    std::vector<const BackendEntry*> untimed = {&backend_with(kExactPicture)};  // the picture yardstick first
+    for (const BackendEntry& b : backend_registry())
+      if (!b.timed() && !b.has(kExactPicture)) untimed.push_back(&b);
+    for (const BackendEntry* e : untimed) {
+      const BackendEntry& entry = *e;
+      const std::string& name = entry.name;
+      auto backend = entry.make_untimed(params);
       const RenderOutput out = render_trace(trace, *backend, params, {});
-      if (name == "reference") reference = out;
+      if (entry.has(kExactPicture)) reference = out;
       // The accuracy command's picture error (accuracy/accuracy_table.hpp).
       const ImageError err = compare_images(out.shown, reference.shown);
       const DepthError derr = compare_depth(out.z, reference.z, static_cast<uint16_t>(params.depth_clear));

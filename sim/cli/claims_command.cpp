@@ -25,7 +25,7 @@
 #include "claims/thesis_losses.hpp"
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
-#include "config/rtl_layout.hpp"
+#include "layout/rtl_layout.hpp"
 #include "common/input_error.hpp"
 #include "rtl/memory_measurements.hpp"
 #include "timing/stage_costs.hpp"

@@ -6,7 +6,7 @@
 #include <exception>
 #include <filesystem>
 
-#include "backends/backend.hpp"
+#include "engine/backend_registry.hpp"
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
 #include "rtl/rtl_variants.hpp"
@@ -26,8 +26,10 @@ int main(int argc, char** argv) {
   RenderArgs ra;
   CLI::App* render = app.add_subcommand("render", "render a model (OBJ, PLY, STL, OFF ...), a scene (JSON) or a trace");
   render->add_option("input", ra.input, "model, scene or trace file (traces/FORMAT.md)")->required();
-  render->add_option("--backend", ra.backend, "reference | golden | approx | rtl")
-      ->check(CLI::IsMember(known_backends()))
+  std::string backend_choices;
+  for (const std::string& n : backend_names()) backend_choices += (backend_choices.empty() ? "" : " | ") + n;
+  render->add_option("--backend", ra.backend, backend_choices)
+      ->check(CLI::IsMember(backend_names()))
       ->capture_default_str();
   render->add_option("--out", ra.out_dir, "output directory (default out/<input name>/)");
   render->add_option("--level", ra.level, "level of a headerless trace: polygon | triangle | dda | thesis")
@@ -46,7 +48,7 @@ int main(int argc, char** argv) {
   render->add_option("--compare", ra.compare,
                      "reference: also render on the reference back end and put the error heat map and its histogram "
                      "into report.html")
-      ->check(CLI::IsMember({"reference"}));
+      ->check(CLI::IsMember({backend_with(kExactPicture).name}));
   render->add_flag("--quiet", ra.quiet, "print nothing on success");
   render->add_flag("--no-prune", ra.no_prune,
                    "compute everything, even what no output depends on (the same outputs; report.json's left_out "
@@ -154,7 +156,7 @@ int main(int argc, char** argv) {
     // variant (render on rtl; regress, bench and claims drive the RTL too).
     // A render whose input is missing fails at once, before any build.
     const bool drives_rtl =
-        (*render && ra.backend == "rtl" && std::filesystem::exists(ra.input)) || *regress || *bench || *claims ||
+        (*render && backend_named(ra.backend).has(kRunsRtl) && std::filesystem::exists(ra.input)) || *regress || *bench || *claims ||
         *stress;  // stress: the variant is built here, not inside a render's timeout
     const ConfigFiles& config = *render ? ra.config
                                 : *regress ? rg.config

@@ -5,8 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <stdexcept>
 
 #include "backends/render_session.hpp"
+#include "engine/backend_registry.hpp"
 #include "pipeline/pipeline.hpp"
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
@@ -37,11 +40,14 @@ DumpRequest parse_dump(const std::string& spec) {
   return {parse_level(spec.substr(0, eq), "--dump", 0), spec.substr(eq + 1)};
 }
 
-void reject_unbuilt_options(const RenderArgs& a) {
-  if (!a.wave.empty() && !is_pipeline_backend(a.backend))
-    throw InputError("--wave", 0, "waveforms record the SystemC pipeline: use --backend rtl (or approx)");
-  if (a.sample_timing && a.backend != "approx")
-    throw InputError("--sample-timing", 0, "sampled timing is an estimator of the approx back end: use --backend approx");
+// The options this back end refuses (its registry entry), before anything is read.
+void reject_unbuilt_options(const RenderArgs& a, const BackendEntry& backend) {
+  const std::map<std::string, bool> given = {{"--wave", !a.wave.empty()}, {"--sample-timing", bool(a.sample_timing)}};
+  for (const BackendRefusal& r : backend.refuses) {
+    const auto it = given.find(r.option);
+    if (it == given.end()) throw std::logic_error("a refusal of an option render does not have: " + r.option);
+    if (it->second) throw InputError(r.option, 0, r.reason);
+  }
   if (a.sample_timing && !(*a.sample_timing > 0 && *a.sample_timing <= 1))
     throw InputError("--sample-timing", 0, "the rate must lie in (0, 1]");
 }
@@ -109,7 +115,8 @@ void print_throughput(const nlohmann::json& r) {
 }  // namespace
 
 int run_render(const RenderArgs& a) {
-  reject_unbuilt_options(a);
+  const BackendEntry& entry = backend_named(a.backend);
+  reject_unbuilt_options(a, entry);
   Params params = load_params(a.config);
   if (a.aa) {  // the shorthand for dda.q_override
     params.q_override = *a.aa;
@@ -118,10 +125,10 @@ int run_render(const RenderArgs& a) {
   std::optional<WaveOptions> wave;  // checked before the input is read
   if (!a.wave.empty() || !a.wave_window.empty() || !a.wave_scopes.empty())
     wave = parse_wave_options(a.wave, a.wave_window, a.wave_scopes, params.dda_clock_ns, params.base_tick_ns);
-  const bool pipelined = is_pipeline_backend(a.backend);
+  const bool pipelined = entry.timed();
   std::unique_ptr<Backend> backend;
-  if (!pipelined) backend = make_backend(a.backend, params);
-  if (params.q_override && !is_hardware_q(*params.q_override) && a.backend != "reference")
+  if (!pipelined) backend = entry.make_untimed(params);
+  if (params.q_override && !is_hardware_q(*params.q_override) && entry.has_dda())
     throw InputError(a.aa ? "--aa" : "dda.q_override", 0,
                      "Q must be 0 or a power of two 1/16..8 for the hardware back ends");
   const std::string dir = a.out_dir.empty() ? "out/" + fs::path(a.input).stem().string() : a.out_dir;
@@ -142,7 +149,7 @@ int run_render(const RenderArgs& a) {
   opt.sample_timing = a.sample_timing;
   RenderOutput out;
   if (pipelined) {
-    out = run_pipeline(a.backend, input.polygons ? *input.polygons : trace, params, opt);
+    out = run_pipeline(entry, input.polygons ? *input.polygons : trace, params, opt);
   } else {
     out = render_trace(trace, *backend, params, opt);
     out.stats.frontend = input.frontend;
@@ -153,7 +160,8 @@ int run_render(const RenderArgs& a) {
   }
 
   ReportContext ctx;
-  ctx.backend = pipelined ? a.backend : backend->name();
+  ctx.backend = entry.name;
+  ctx.capabilities = entry.capabilities;
   ctx.input = a.input;
   ctx.level = level_name(input.polygons ? TraceLevel::kPolygon : trace.level);
   ctx.image_sha256 = sha256_hex(out.shown.rgb);
@@ -176,7 +184,7 @@ int run_render(const RenderArgs& a) {
     std::fprintf(stderr, "warning: %s\n", w);
     ctx.warnings.push_back(w);
   }
-  if (ctx.backend == "rtl") ctx.rtl_build = built_rtl_key();
+  if (entry.has(kRunsRtl)) ctx.rtl_build = built_rtl_key();
   ctx.front_end_passes = front_end_passes();
   ctx.left_out = left_out(out.stats);
   const std::optional<ChartLibrary> charts = load_chart_library();
@@ -197,12 +205,14 @@ int run_render(const RenderArgs& a) {
   files.add_text("report.json", report.dump(2) + "\n");
   files.add_text("report.md", report_markdown(report));
   std::optional<FrameComparison> compare;
-  if (a.compare == "reference") {  // the same input on the reference back end, in this process (it is untimed)
-    const std::unique_ptr<Backend> ref = make_backend("reference", params);
+  if (!a.compare.empty()) {  // the same input on the picture yardstick, in this process (it is untimed)
+    const BackendEntry& yardstick = backend_named(a.compare);
+    if (!yardstick.make_untimed) throw std::logic_error("--compare needs an untimed back end: " + a.compare);
+    const std::unique_ptr<Backend> ref = yardstick.make_untimed(params);
     const LoadedInput ref_input = load_input(a, params, true);
     RenderOptions ref_opt;
     ref_opt.prune = ref_input.prune;
-    compare = FrameComparison{"reference", render_trace(ref_input.trace, *ref, params, ref_opt).shown};
+    compare = FrameComparison{yardstick.name, render_trace(ref_input.trace, *ref, params, ref_opt).shown};
   }
   files.add("report.html", [&](const std::string& p) {
     std::ofstream(p) << report_html(report_page_data(report, out.stats), out.shown, frame_png, out.stats, compare, charts);

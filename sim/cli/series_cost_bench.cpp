@@ -8,6 +8,7 @@
 
 #include "cli/bench_stats.hpp"
 #include "cli/child_render.hpp"
+#include "engine/backend_registry.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -17,7 +18,7 @@ namespace {
 // Pairs of renders (with, without) per input and back end: the cost is a few
 // per cent and this shared machine's noise about ten, so the ratio is taken
 // pair by pair and its median quoted (approx renders in a tenth of a second).
-int pairs_for(const std::string& backend) { return backend == "approx" ? 21 : 11; }
+int pairs_for(const BackendEntry& backend) { return backend.has(kRunsRtl) ? 11 : 21; }
 // A trace the HAD bounds, with thousands of triangles; a model of twelve
 // large ones.
 const char* const kInputs[] = {"traces/demo.trace", "traces/models/cube.off"};
@@ -60,11 +61,13 @@ SeriesCostBench run_series_cost_bench(const ConfigFiles& config, const std::stri
       "| input | back end | pairs | wall s with | without | cost | process s with | without | cost | same report |\n"
       "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const char* input : kInputs) {
-    for (const char* backend : {"approx", "rtl"}) {
+    for (const BackendEntry& entry : backend_registry()) {
+      if (!entry.timed()) continue;
+      const std::string& backend = entry.name;
       const std::string base = dir + "/" + fs::path(input).filename().string() + "-" + backend;
       std::vector<double> wall_on, wall_off, proc_on, proc_off, wall_ratio, proc_ratio;
       Timed on, off;
-      const int pairs = pairs_for(backend);
+      const int pairs = pairs_for(entry);
       const bool ran = run_pairs(
           pairs,
           [&] {
@@ -97,7 +100,7 @@ SeriesCostBench run_series_cost_bench(const ConfigFiles& config, const std::stri
                         {"process_cost", proc_cost}, {"same_report", same}});
       char line[512];
       std::snprintf(line, sizeof line, "| %s | %s | %d | %.3f | %.3f | %+.1f %% | %.3f | %.3f | %+.1f %% | %s |\n",
-                    fs::path(input).filename().c_str(), backend, pairs, wn, wf, 100 * wall_cost, pn, pf, 100 * proc_cost,
+                    fs::path(input).filename().c_str(), backend.c_str(), pairs, wn, wf, 100 * wall_cost, pn, pf, 100 * proc_cost,
                     same ? "yes" : "NO");
       b.markdown += line;
       std::fputs(line, stdout);

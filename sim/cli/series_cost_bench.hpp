@@ -1,7 +1,7 @@
 // What report.html's series cost (`girtd bench`): the stage timelines, the
 // heat maps and the FIFOs' occupancy, recorded on every timed run. Each
 // input renders on approx and rtl with them and without (GIRTD_NO_SERIES,
-// backends/series_switch.hpp) in pairs, one after the other, each in its own
+// timeline/series_switch.hpp) in pairs, one after the other, each in its own
 // process: the median over the pairs of the ratio of their `wall_s` (the
 // simulation, where the series are recorded) and of their whole process
 // (writing the page included).

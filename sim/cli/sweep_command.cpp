@@ -33,7 +33,8 @@
 #include "io/sha256.hpp"
 #include "io/subprocess.hpp"
 #include "sweep/sweep_points.hpp"
-#include "sweep/sweep_spec.hpp"
+#include "engine/backend_registry.hpp"
+#include "io/sweep_spec.hpp"
 #include "sweep/sweep_table.hpp"
 #include "sweep/yosys_cells.hpp"
 #include "report/sweep_page.hpp"
@@ -160,8 +161,9 @@ std::vector<const SweepPoint*> spot_check_points(const SweepSpec& spec, const st
 // rtl agrees: the same picture and modeled time within 0.1 %. A run that
 // fails is no verdict: rtl_agrees stays null, the reason in rtl_error.
 void spot_check(const Task& t, json& row, const SweepSpec& spec, const fs::path& dir) {
-  const fs::path run = dir / "runs" / (t.id + "-rtl");
-  const json r = render_task(t, spec, "rtl", run, nullptr);
+  const std::string& yardstick = backend_with(kExactTiming).name;
+  const fs::path run = dir / "runs" / (t.id + "-" + yardstick);
+  const json r = render_task(t, spec, yardstick, run, nullptr);
   if (r.is_null()) {
     row["rtl_error"] = "the rtl render failed: " + run.string() + ".log";
     return;
@@ -198,7 +200,10 @@ int run_slurm_array(const SweepArgs& a, const std::string& out, size_t rows) {
 }  // namespace
 
 int run_sweep(const SweepArgs& a) {
-  const SweepSpec spec = read_sweep_spec(a.spec);
+  std::vector<std::string> timed;
+  for (const BackendEntry& b : backend_registry())
+    if (b.timed()) timed.push_back(b.name);
+  const SweepSpec spec = read_sweep_spec(a.spec, timed);
   size_t slice = 0, slices = 1;
   if (!a.slice.empty() && std::sscanf(a.slice.c_str(), "%zu/%zu", &slice, &slices) != 2)
     throw InputError("--slice", 0, "expected I/S, got '" + a.slice + "'");
@@ -289,8 +294,8 @@ int run_sweep(const SweepArgs& a) {
 
   // Spot checks on rtl, kept in the rows as they finish (a rerun skips them).
   int disagreements = 0;
-  if (spec.spot_check > 0 && spec.backend == "rtl")
-    std::printf("spot_check: the sweep ran on rtl already; nothing to check\n");
+  if (spec.spot_check > 0 && backend_named(spec.backend).has(kExactTiming))
+    std::printf("spot_check: the sweep ran on %s already; nothing to check\n", spec.backend.c_str());
   else if (spec.spot_check > 0) {
     const auto checked = spot_check_points(spec, points);
     std::printf("spot-checking %zu point(s) on rtl\n", checked.size());

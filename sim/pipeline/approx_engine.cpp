@@ -1,6 +1,8 @@
 // The approx back end: the golden DDA and HAD decide every pixel; the event
 // model of models/timing decides when (its error against the RTL is measured
 // by `girtd bench`, not assumed).
+#include "pipeline/approx_engine.hpp"
+
 #include <optional>
 #include <vector>
 
@@ -8,7 +10,7 @@
 #include "backends/render_session.hpp"
 #include "backends/backend_engine.hpp"
 #include "backends/model_series.hpp"
-#include "backends/series_switch.hpp"
+#include "timeline/series_switch.hpp"
 #include "dda/dda_state_machine.hpp"
 #include "timing/backend_timing.hpp"
 

@@ -14,10 +14,10 @@
 #include "dda/dda_params.hpp"
 #include "backends/backend_engine.hpp"
 #include "pipeline/counter_timeline.hpp"
-#include "pipeline/stage_activity.hpp"
+#include "timeline/stage_activity.hpp"
 #include "pipeline/token.hpp"
 #include "rtl/backend_rtl.hpp"
-#include "backends/series_switch.hpp"
+#include "timeline/series_switch.hpp"
 #include "wave/wave_recorder.hpp"
 
 namespace girtd {

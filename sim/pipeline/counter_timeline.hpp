@@ -12,8 +12,8 @@
 #include <cstdint>
 
 #include "backends/backend_engine.hpp"
-#include "pipeline/stage_activity.hpp"
-#include "pipeline/time_series.hpp"
+#include "timeline/stage_activity.hpp"
+#include "timeline/time_series.hpp"
 
 namespace girtd {
 

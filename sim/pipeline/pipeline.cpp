@@ -12,28 +12,15 @@
 #include "backends/backend.hpp"
 #include "rtl/backend_rtl.hpp"
 #include "pipeline/pipeline_elaboration.hpp"
-#include "backends/series_switch.hpp"
 
 namespace girtd {
 
-std::unique_ptr<BackendEngine> make_approx_engine(const Params& p, std::optional<double> sample_rate);
-
-// "approx" or "rtl"; `traced`: the rtl engine on the build with FST tracing;
-// `sample_rate`: approx's sampled timing.
-std::unique_ptr<BackendEngine> make_backend_engine(const std::string& backend, const Params& p, bool traced,
-                                                   std::optional<double> sample_rate) {
-  if (backend == "approx") return make_approx_engine(p, sample_rate);
-  if (backend == "rtl") {
-    std::unique_ptr<BackendRtl> rtl = make_backend_rtl(p, 0, traced);
-    if (record_series()) rtl->record_screen_maps();
-    return rtl;
-  }
-  throw std::logic_error("not a pipeline back end: " + backend);
-}
-
-bool is_pipeline_backend(const std::string& name) { return name == "approx" || name == "rtl"; }
-
 namespace {
+
+std::unique_ptr<BackendEngine> make_engine(const BackendEntry& backend, const Params& p, const RenderOptions& opt) {
+  if (!backend.make_timed) throw std::logic_error("not a timed back end: " + backend.name);
+  return backend.make_timed(p, EngineRequest{opt.wave.has_value(), opt.sample_timing});
+}
 
 // Input the pipeline cannot take: thesis-level traces, a Q the hardware
 // cannot do.
@@ -45,9 +32,9 @@ void check_pipeline_input(const Trace& trace) {
 
 }  // namespace
 
-PipelineElaboration::PipelineElaboration(const std::string& backend, const Trace& input, const Params& p,
+PipelineElaboration::PipelineElaboration(const BackendEntry& backend, const Trace& input, const Params& p,
                                          const RenderOptions& opt, DumpTap* tap)
-    : p_(p), opt_(opt), engine_(make_backend_engine(backend, p, opt.wave.has_value(), opt.sample_timing)), backend_(backend) {
+    : p_(p), opt_(opt), engine_(make_engine(backend, p, opt)), backend_(backend.name) {
   engine_->prune(opt.prune);
   for (const TraceFrame& f : input.frames) settings_.push_back(f.settings);
   // The stream that entered is dumped as it is; one made inside, by the
@@ -127,18 +114,18 @@ void PipelineElaboration::start_wave(const WaveOptions& w) {
   back_end_->record(wave_.get());
 }
 
-RenderOutput run_pipeline(const std::string& backend, const Trace& input, const Params& p, const RenderOptions& opt) {
+RenderOutput run_pipeline(const BackendEntry& backend, const Trace& input, const Params& p, const RenderOptions& opt) {
   static bool elaborated = false;
   if (elaborated) throw std::logic_error("SystemC elaborates once per process: one pipeline run per process");
   elaborated = true;
   check_pipeline_input(input);
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   if (opt.wave) {
-    if (backend == "rtl") check_rtl_wave_scopes(opt.wave->scopes, p);  // before the run's own RTL exists
+    if (backend.has(kRunsRtl)) check_rtl_wave_scopes(opt.wave->scopes, p);  // before the run's own RTL exists
     else
       for (const std::string& s : opt.wave->scopes)
         if (s != "pipeline" && s.rfind("pipeline.", 0) != 0)
-          throw InputError("--wave-scope", 0, "'" + s + "': approx records the SystemC side alone (pipeline...)");
+          throw InputError("--wave-scope", 0, "'" + s + "': " + backend.name + " records the SystemC side alone (pipeline...)");
   }
   std::unique_ptr<DumpTap> tap;  // checked before the run, committed after it
   if (opt.dump) tap = std::make_unique<DumpTap>(*opt.dump, input, p);

@@ -7,16 +7,16 @@
 
 #include <string>
 
+#include "backends/backend_entry.hpp"
 #include "backends/render_session.hpp"
 #include "config/params.hpp"
 #include "io/trace.hpp"
 
 namespace girtd {
 
-bool is_pipeline_backend(const std::string& name);  // "approx", "rtl"
-
 // `input`: a polygon-level trace (models, scenes; the pipeline runs the
 // front end itself), a triangle- or a DDA-level one.
-RenderOutput run_pipeline(const std::string& backend, const Trace& input, const Params& p, const RenderOptions& opt);
+// `backend`: a timed entry (engine/backend_registry.hpp).
+RenderOutput run_pipeline(const BackendEntry& backend, const Trace& input, const Params& p, const RenderOptions& opt);
 
 }  // namespace girtd

@@ -18,6 +18,7 @@
 #include "dda/dda_preparer.hpp"
 #include "frontend/front_end_stages.hpp"
 #include "backends/backend_engine.hpp"
+#include "backends/backend_entry.hpp"
 #include "pipeline/backend_stage.hpp"
 #include "pipeline/source_stage.hpp"
 #include "pipeline/timed_stage.hpp"
@@ -30,7 +31,7 @@ using sc_core::sc_fifo;
 class PipelineElaboration {
  public:
   // `tap`: --dump's, or nullptr.
-  PipelineElaboration(const std::string& backend, const Trace& input, const Params& p, const RenderOptions& opt,
+  PipelineElaboration(const BackendEntry& backend, const Trace& input, const Params& p, const RenderOptions& opt,
                       DumpTap* tap);
 
   RenderOutput run();

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "pipeline/stage_activity.hpp"
+#include "timeline/stage_activity.hpp"
 #include "pipeline/token.hpp"
 
 namespace girtd {

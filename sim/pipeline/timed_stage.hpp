@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "pipeline/stage_activity.hpp"
+#include "timeline/stage_activity.hpp"
 #include "pipeline/token.hpp"
 
 namespace girtd {

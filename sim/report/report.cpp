@@ -30,12 +30,11 @@ json* parent_of(json& r, const std::string& path, std::string& leaf) {
 
 json make_report(const ReportContext& ctx, const RunStats& s, const Params& params) {
   const ReportSource src{ctx, s, params};
-  const unsigned bit = known_by_bit(ctx.backend);
   json r = json::object();
   json stages = json::object();
   for (const StageStats& st : s.stages) stages[st.name] = json::object();
   for (const ReportKey& k : report_keys()) {
-    const bool known = k.known_by & bit;
+    const bool known = k.known_to(ctx.capabilities);
     if (k.stage_value) {
       const std::string leaf = k.path.substr(k.path.rfind('.') + 1);
       for (const StageStats& st : s.stages) stages[st.name][leaf] = known ? k.stage_value(src, st) : json();

@@ -95,7 +95,7 @@ std::vector<ReportKey> make_keys() {
           "`preparer.fill_rule` top_left and `preparer.edge_flags` (config/presets/robust.json). Needs the "
           "triangles' surfaces (polygon-level input, or triangle traces that carry them). Not on rtl: its HAD "
           "sees no surface ids",
-          kReference | kGolden | kApprox, [](auto& r) { return json(r.s.had.reblended); }),
+          kSurfaces, [](auto& r) { return json(r.s.had.reblended); }),
       key("pixels_dropped", "count",
           "nf = 0 or off-screen. generated = written + blended + z_rejected + dropped", kEvery,
           [](auto& r) { return json(r.s.had.dropped); }, true),
@@ -274,7 +274,7 @@ std::vector<ReportKey> make_keys() {
       key("image_sha256", "hex", "SHA-256 of the displayed buffer's raw 1024 x 1024 x 3 RGB bytes", kEvery,
           [](auto& r) { return json(r.ctx.image_sha256); }, true),
       key("not_modeled", "list", "the registered keys this back end cannot know (their values are null)", kEvery,
-          [](auto& r) { return json(not_modeled_keys(r.ctx.backend)); }),
+          [](auto& r) { return json(not_modeled_keys(r.ctx.capabilities)); }),
       key("warnings", "list of text",
           "input the run went on from, each `FILE: what` and also printed on stderr as `warning: FILE: what` (a "
           "model's missing `.mtl`, an unknown material: `io/README.md`); empty when there were none",
@@ -292,7 +292,7 @@ std::vector<ReportKey> make_keys() {
           "triangle (`sim/backends/sampled_timing.hpp`): `rate`, triangles `measured`, `warmed` and `skipped` (not "
           "drawn: the frame is incomplete), `skipped_s` (the time charged for the skipped ones) and `ci_half_s` (its "
           "99.7 % confidence half-width)",
-          kApprox, [](auto& r) {
+          kSampled, [](auto& r) {
             if (!r.s.sampling) return json();
             const SamplingStats& m = *r.s.sampling;
             const double tick_s = r.params.base_tick_ns * 1e-9;
@@ -303,49 +303,40 @@ std::vector<ReportKey> make_keys() {
           [](auto& r) { return r.params.source; }),
       key("rtl_build", "text",
           "rtl only (else null): the key of the RTL elaboration that ran, 16 hex digits of the configuration values "
-          "the Verilated RTL is built for (`models/config/rtl_package.hpp`); another configuration runs in an RTL "
+          "the Verilated RTL is built for (`models/layout/rtl_package.hpp`); another configuration runs in an RTL "
           "variant built for it (`sim/rtl/rtl_variants.hpp`)",
           kEvery, [](auto& r) { return r.ctx.rtl_build.empty() ? json() : json(r.ctx.rtl_build); }),
   };
   return k;
 }
 
-std::string known_by_text(unsigned k) {
+std::string known_by_text(unsigned k, const std::vector<BackendEntry>& backends) {
   if (k == kEvery) return "all";
   std::string out;
-  for (const auto& [bit, name] : {std::pair{kReference, "reference"}, {kGolden, "golden"}, {kApprox, "approx"}, {kRtl, "rtl"}})
-    if (k & bit) out += (out.empty() ? "" : ", ") + std::string(name);
+  for (const BackendEntry& b : backends)
+    if ((b.capabilities & k) == k) out += (out.empty() ? "" : ", ") + b.name;
   return out;
 }
 
 }  // namespace
-
-unsigned known_by_bit(const std::string& backend) {
-  if (backend == "reference") return kReference;
-  if (backend == "golden") return kGolden;
-  if (backend == "approx") return kApprox;
-  if (backend == "rtl") return kRtl;
-  return 0;
-}
 
 const std::vector<ReportKey>& report_keys() {
   static const std::vector<ReportKey> keys = make_keys();
   return keys;
 }
 
-std::vector<std::string> not_modeled_keys(const std::string& backend) {
+std::vector<std::string> not_modeled_keys(unsigned capabilities) {
   std::vector<std::string> out;
-  const unsigned bit = known_by_bit(backend);
   for (const ReportKey& k : report_keys())
-    if (!(k.known_by & bit)) out.push_back(k.path);
+    if (!k.known_to(capabilities)) out.push_back(k.path);
   return out;
 }
 
-std::string report_keys_markdown() {
+std::string report_keys_markdown(const std::vector<BackendEntry>& backends) {
   std::ostringstream o;
   o << "| key | unit | known by | meaning |\n|---|---|---|---|\n";
   for (const ReportKey& k : report_keys())
-    o << "| `" << k.path << "` | " << k.unit << " | " << known_by_text(k.known_by) << " | " << k.meaning << " |\n";
+    o << "| `" << k.path << "` | " << k.unit << " | " << known_by_text(k.known_by, backends) << " | " << k.meaning << " |\n";
   return o.str();
 }
 

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "backends/backend_entry.hpp"
 #include "backends/prune_plan.hpp"
 #include "backends/run_stats.hpp"
 #include "config/params.hpp"
@@ -20,6 +21,7 @@ namespace girtd {
 // What a render knows besides its RunStats.
 struct ReportContext {
   std::string backend;
+  unsigned capabilities = 0;  // the back end's (backends/backend_entry.hpp)
   std::string input;
   std::string level;
   std::string image_sha256;
@@ -35,24 +37,23 @@ struct ReportSource {
   const Params& params;
 };
 
-// Which back ends can know a key; the others report it as null and list it
-// in not_modeled.
+// Which back ends can know a key: the capabilities it needs of one
+// (backends/backend_entry.hpp). The others report it as null and list it in
+// not_modeled.
 enum KnownBy : unsigned {
-  kReference = 1,
-  kGolden = 2,
-  kApprox = 4,
-  kRtl = 8,
-  kTimed = kApprox | kRtl,
-  kHardware = kGolden | kTimed,  // the back ends that run the DDA
-  kEvery = kReference | kHardware,
+  kEvery = 0,
+  kHardware = kDrawsWithDda,  // the back ends that run the DDA
+  kTimed = kModelsTime,
+  kSurfaces = kSeesSurfaces,
+  kSampled = kSamplesTiming,
 };
-unsigned known_by_bit(const std::string& backend);
 
 struct ReportKey {
   std::string path;  // dotted; "stages.*.busy_s" for a key of every stage
   std::string unit;
   std::string meaning;
-  unsigned known_by = kEvery;
+  unsigned known_by = kEvery;  // the capabilities a back end needs to know it
+  bool known_to(unsigned capabilities) const { return (capabilities & known_by) == known_by; }
   bool summary = false;  // a row of report.md's key table
   // The value (null when this input has none, e.g. no front end ran); a
   // key of every stage reads the stage instead.
@@ -63,10 +64,11 @@ struct ReportKey {
 // Every key, in report order.
 const std::vector<ReportKey>& report_keys();
 
-// The registered keys this back end cannot know.
-std::vector<std::string> not_modeled_keys(const std::string& backend);
+// The registered keys a back end with these capabilities cannot know.
+std::vector<std::string> not_modeled_keys(unsigned capabilities);
 
-// sim/README.md's key table (girtd_report_keys prints it).
-std::string report_keys_markdown();
+// sim/README.md's key table (girtd_report_keys prints it), naming which of
+// `backends` know each key.
+std::string report_keys_markdown(const std::vector<BackendEntry>& backends);
 
 }  // namespace girtd

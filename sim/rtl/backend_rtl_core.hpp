@@ -14,10 +14,10 @@
 #include <type_traits>
 #include <utility>
 
-#include "backends/series_switch.hpp"
+#include "timeline/series_switch.hpp"
 #include "common/input_error.hpp"
 #include "rtl/backend_rtl.hpp"
-#include "config/rtl_layout.hpp"
+#include "layout/rtl_layout.hpp"
 #include "rtl/port_access.hpp"
 #include "rtl/rtl_screen_maps.hpp"
 #include "verilated.h"

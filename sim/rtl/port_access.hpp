@@ -12,14 +12,14 @@
 #include "config/params.hpp"
 #include "dda/dda_params.hpp"
 #include "dda/ep_numerics.hpp"
-#include "config/rtl_layout.hpp"
-#include "config/rtl_package.hpp"
+#include "layout/rtl_layout.hpp"
+#include "layout/rtl_package.hpp"
 #include "rtl_build.hpp"
 
 namespace girtd {
 
 // Widths, layouts and depths are elaboration values of the Verilated RTL
-// (rtl_build.hpp, models/config/rtl_package.hpp): a configuration that asks
+// (rtl_build.hpp, models/layout/rtl_package.hpp): a configuration that asks
 // for others needs another build (an RTL variant), never a silently wrong run.
 inline void require_rtl_build(const Params& p) {
   if (rtl_build_key(p) == kRtlBuildKey) return;

@@ -1,5 +1,5 @@
 // Which elaboration of the RTL this executable holds: its build key and
-// values (models/config/rtl_package.hpp), for code that must not include
+// values (models/layout/rtl_package.hpp), for code that must not include
 // the generated rtl_build.hpp itself (sim/rtl/rtl_variants.hpp).
 #pragma once
 

@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "common/file_text.hpp"
-#include "config/rtl_package.hpp"
+#include "layout/rtl_package.hpp"
 #include "io/subprocess.hpp"
 #include "rtl/rtl_build_info.hpp"
 

@@ -1,5 +1,5 @@
 // RTL variants on demand. The Verilated RTL is elaborated for its widths,
-// layouts and depths (models/config/rtl_package.hpp: rtl_build_values); a
+// layouts and depths (models/layout/rtl_package.hpp: rtl_build_values); a
 // run whose configuration asks for others runs in a girtd built for them,
 // DIR/KEY/bin/girtd (DIR: rtl_variants_dir(), KEY: rtl_build_key). It is
 // built once, with a line on stderr saying so and why, reused by later runs

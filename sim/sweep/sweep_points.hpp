@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sweep/sweep_spec.hpp"
+#include "io/sweep_spec.hpp"
 
 namespace girtd {
 

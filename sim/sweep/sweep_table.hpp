@@ -9,26 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace girtd {
+#include "io/sweep_spec.hpp"
 
-// What a row takes from its render's report.json: its column name and where
-// the report keeps it (a JSON pointer).
-struct ReportColumn {
-  const char* name;
-  const char* pointer;
-};
-inline constexpr ReportColumn kReportColumns[] = {
-    {"modeled_mpixels_per_s", "/modeled_mpixels_per_s"},
-    {"sustained_mpixels_per_s", "/sustained_mpixels_per_s"},
-    {"modeled_time_s", "/modeled_time_s"},
-    {"target_met", "/target_met"},
-    {"bottleneck", "/bottleneck"},
-    {"had_busy_s", "/stages/had/busy_s"},
-    {"had_page_wait_s", "/time_split/had_page_wait_s"},
-    {"cache_accesses", "/cache/accesses"},
-    {"page_misses", "/cache/page_misses"},
-    {"image_sha256", "/image_sha256"},
-    {"wall_s", "/wall_s"}};
+namespace girtd {
 
 struct SweepSummary {
   nlohmann::json points;  // one per point: point, axis values, valid, cost, min_mpixels_per_s, meets_target, on_front

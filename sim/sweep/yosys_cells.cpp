@@ -7,7 +7,7 @@
 #include <regex>
 #include <sstream>
 
-#include "config/rtl_package.hpp"
+#include "layout/rtl_package.hpp"
 #include "io/subprocess.hpp"
 
 namespace girtd {

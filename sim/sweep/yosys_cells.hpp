@@ -2,7 +2,7 @@
 // the sweep's measured cost column beside the chip-count estimate
 // (models/cost). The same synthesis as tools/hw_cost.sh's "whole DDA" row
 // (synth -flatten, the wrap detector left out: a simulation aid), on the
-// SystemVerilog package generated for the point (models/config/rtl_package).
+// SystemVerilog package generated for the point (models/layout/rtl_package).
 #pragma once
 
 #include <optional>

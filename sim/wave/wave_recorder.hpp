@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "common/input_error.hpp"
-#include "pipeline/stage_activity.hpp"
-#include "wave/wave_options.hpp"
+#include "timeline/stage_activity.hpp"
+#include "timeline/wave_options.hpp"
 
 class VerilatedFstC;
 

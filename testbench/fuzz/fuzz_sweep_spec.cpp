@@ -1,9 +1,9 @@
-// A `girtd sweep` spec (sim/sweep/sweep_spec.hpp).
+// A `girtd sweep` spec (sim/io/sweep_spec.hpp).
 #include "fuzz_input.hpp"
-#include "sweep/sweep_spec.hpp"
+#include "io/sweep_spec.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = girtd::fuzz::as_file(data, size, "fuzz_sweep.json");
-  girtd::fuzz::expect_only_input_errors([&] { girtd::read_sweep_spec(path); });
+  girtd::fuzz::expect_only_input_errors([&] { girtd::read_sweep_spec(path, {"approx", "rtl"}); });
   return 0;
 }

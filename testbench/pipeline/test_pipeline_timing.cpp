@@ -10,6 +10,7 @@
 #include "backends/golden_backend.hpp"
 #include "backends/render_session.hpp"
 #include "dda/dda_preparer.hpp"
+#include "engine/backend_registry.hpp"
 #include "backends/front_end_runner.hpp"
 #include "io/scene_reader.hpp"
 #include "pipeline/pipeline.hpp"
@@ -64,7 +65,7 @@ TEST_CASE("a slow preparer sets the pace: busy N x 115 flop / rate, the DDA star
   const double rate = 1e5;  // 1.15 ms per triangle
   const Params p = with(R"({"pipeline": {"flops_per_s": {"preparer": 1e5, "window_clip": 1e12}}})");
   const Trace trace = small_triangles(40, 3);
-  const RenderOutput out = run_pipeline("approx", trace, p, {});
+  const RenderOutput out = run_pipeline(backend_named("approx"), trace, p, {});
   const RunStats& s = out.stats;
   const double per_triangle = 115.0 / rate;
   REQUIRE(preparer_ops(Params::defaults()).flops() == 115.0);
@@ -89,7 +90,7 @@ TEST_CASE("a slow preparer sets the pace: busy N x 115 flop / rate, the DDA star
 
 TEST_CASE("a FIFO two deep blocks the stage before a slow one and never holds more than two", "[pipeline]") {
   const Params p = with(R"({"pipeline": {"fifo_depth": 2, "flops_per_s": {"preparer": 1e5, "window_clip": 1e12}}})");
-  const RenderOutput out = run_pipeline("approx", small_triangles(30, 4), p, {});
+  const RenderOutput out = run_pipeline(backend_named("approx"), small_triangles(30, 4), p, {});
   const StageStats& clip = stage(out.stats, "window_clip");
   const StageStats& prep = stage(out.stats, "preparer");
   // The window clip finishes at once, then waits for the preparer to take
@@ -114,7 +115,7 @@ TEST_CASE("rtl in the pipeline takes exactly the bare Verilated back end's ticks
     bare_rgb = bare->shown().rgb;
   }
 
-  const RenderOutput out = run_pipeline("rtl", dda, p, {});
+  const RenderOutput out = run_pipeline(backend_named("rtl"), dda, p, {});
   REQUIRE(out.stats.timing);
   CHECK(out.stats.timing->modeled_s == Approx(double(c.ticks) * 5e-9).epsilon(1e-12));
   CHECK(out.stats.pixels_generated == c.pixels_generated);
@@ -140,7 +141,7 @@ TEST_CASE("approx in the pipeline takes exactly the event model's ticks", "[pipe
     model.triangle(st.cycles, px);
   }
   model.end_frame();
-  const RenderOutput out = run_pipeline("approx", dda, p, {});
+  const RenderOutput out = run_pipeline(backend_named("approx"), dda, p, {});
   CHECK(out.stats.timing->modeled_s == Approx(double(model.timing().ticks) * 5e-9).epsilon(1e-12));
   CHECK(out.stats.timing->page_misses == model.timing().page_misses);
 }
@@ -155,7 +156,7 @@ TEST_CASE("the timed front end, stages working on different frames at once, give
   keep.keep_all_frames = true;
   const RenderOutput want = render_trace(fe.triangles, golden, p, keep);
 
-  const RenderOutput got = run_pipeline("approx", polygons, p, keep);
+  const RenderOutput got = run_pipeline(backend_named("approx"), polygons, p, keep);
   REQUIRE(got.stats.frontend);
   CHECK(got.stats.frontend->triangles_out == fe.counts.triangles_out);
   CHECK(got.stats.frontend->depth_sort_comparisons == fe.counts.depth_sort_comparisons);

@@ -15,7 +15,7 @@
 #include <optional>
 
 #include "accuracy/llvmpipe_comparison.hpp"
-#include "backends/backend.hpp"
+#include "engine/backend_registry.hpp"
 #include "backends/render_session.hpp"
 #include "config/params.hpp"
 #include "io/trace_reader.hpp"
@@ -25,7 +25,7 @@ namespace {
 
 LlvmpipeComparison against_llvmpipe(const std::string& backend, const Params& p, const Trace& trace,
                                     const LlvmpipeFrame& l) {
-  auto b = make_backend(backend, p);
+  auto b = backend_named(backend).make_untimed(p);
   const RenderOutput out = render_trace(trace, *b, p, {});
   const LlvmpipeComparison c =
       compare_with_llvmpipe(trace.frames[0].triangles, out.shown, out.z, l, static_cast<uint16_t>(p.depth_clear));

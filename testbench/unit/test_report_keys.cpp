@@ -1,12 +1,13 @@
 // The report key registry (sim/report/report_keys.cpp) against the
 // contract's list (../shared/CONTRACT.md, copied here by hand) and its own
-// rules: every key once, summary keys at the top level, a back end's
-// not_modeled exactly the keys it cannot know.
+// rules: every key once, summary keys at the top level, a registered back
+// end's not_modeled exactly the keys it cannot know.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <set>
 
+#include "engine/backend_registry.hpp"
 #include "report/report.hpp"
 
 namespace girtd {
@@ -32,11 +33,12 @@ TEST_CASE("the registry declares every key the contract names, each once", "[rep
 TEST_CASE("not_modeled: nothing on approx, seams and sampling on rtl, the timing keys on golden, the DDA's too on "
           "reference",
           "[report]") {
-  CHECK(not_modeled_keys("approx").empty());
+  CHECK(not_modeled(backend_named("approx")).empty());
   // The RTL counts wraps too (hw/dda/dda_limits.sv); its HAD sees no surface
   // ids; sampled timing is approx's estimator.
-  CHECK(not_modeled_keys("rtl") == std::vector<std::string>{"pixels_reblended", "sampling"});
-  const std::vector<std::string> golden = not_modeled_keys("golden"), reference = not_modeled_keys("reference");
+  CHECK(not_modeled(backend_named("rtl")) == std::vector<std::string>{"pixels_reblended", "sampling"});
+  const std::vector<std::string> golden = not_modeled(backend_named("golden")),
+                                 reference = not_modeled(backend_named("reference"));
   auto has = [](const std::vector<std::string>& v, const char* k) { return std::count(v.begin(), v.end(), k) == 1; };
   for (const char* k : {"modeled_time_s", "bottleneck", "cache.page_misses", "stages.*.busy_s", "target_met",
                         "sustained_mpixels_per_s", "sampling"}) {
@@ -59,6 +61,7 @@ TEST_CASE("a golden report: registered keys present, unknown ones null, groups o
   s.stages.push_back(untimed_stage("dda", 1));
   ReportContext ctx;
   ctx.backend = "golden";
+  ctx.capabilities = backend_named("golden").capabilities;
   const Params p = Params::defaults();
   const nlohmann::json r = make_report(ctx, s, p);
   CHECK(r.at("dda_efficiency") == 0.5);  // 10 emitting clocks of 20

@@ -1,4 +1,4 @@
-// The hardware's derived layouts (models/config/rtl_layout.hpp) against
+// The hardware's derived layouts (models/layout/rtl_layout.hpp) against
 // values worked by hand from GIRTD.md: the 69-bit FIFO word of fig. 4.17, the
 // 16 x 1 page of 4.2.11.4 and other page shapes, the 64-bit VRAM word; the RTL
 // build key; and the timing model's cache of several pages.
@@ -11,8 +11,8 @@
 
 #include "common/input_error.hpp"
 #include "config/params.hpp"
-#include "config/rtl_layout.hpp"
-#include "config/rtl_package.hpp"
+#include "layout/rtl_layout.hpp"
+#include "layout/rtl_package.hpp"
 #include "timing/backend_timing.hpp"
 
 namespace girtd {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "backends/backend.hpp"
+#include "engine/backend_registry.hpp"
 #include "backends/render_session.hpp"
 #include "frontend/front_end.hpp"
 #include "frontend/vertex_normals.hpp"
@@ -117,7 +117,7 @@ TEST_CASE("end to end: lit sphere and cube, eight pixels within 2 LSB", "[fronte
   frame.settings.q = 0;  // no fringe: the pixels sampled are interior anyway
   for (const FrontTriangle& t : fe.run_frame(scene(), frame.settings.window)) frame.triangles.push_back(t.tri);
   trace.frames.push_back(frame);
-  auto backend = make_backend("golden", params);
+  auto backend = backend_named("golden").make_untimed(params);
   const RenderOutput out = render_trace(trace, *backend, params, RenderOptions{});
 
   struct Named {

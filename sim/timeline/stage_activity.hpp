@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "backends/series_switch.hpp"
-#include "pipeline/time_series.hpp"
+#include "timeline/series_switch.hpp"
+#include "timeline/time_series.hpp"
 
 namespace girtd {
 

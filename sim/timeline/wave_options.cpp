@@ -1,4 +1,4 @@
-#include "wave/wave_options.hpp"
+#include "timeline/wave_options.hpp"
 
 #include <cmath>
 

@@ -1,5 +1,4 @@
-#include "sweep/sweep_spec.hpp"
-#include "sweep/sweep_table.hpp"
+#include "io/sweep_spec.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -53,7 +52,8 @@ void check_config_key(const std::string& key, const json& value, Fail fail) {
 
 }  // namespace
 
-SweepSpec parse_sweep_spec(const std::string& text, const std::string& path) {
+SweepSpec parse_sweep_spec(const std::string& text, const std::string& path,
+                           const std::vector<std::string>& timed_backends) {
   const json j = parse_json_text(text, path);
   const std::map<std::string, int> lines = json_key_lines(text);
   auto line = [&](const std::string& key) {
@@ -119,8 +119,12 @@ SweepSpec parse_sweep_spec(const std::string& text, const std::string& path) {
   s.inputs = files("inputs", true);
   s.base = files("base", false);
   if (j.contains("backend")) {
-    if (!j["backend"].is_string() || (j["backend"] != "approx" && j["backend"] != "rtl"))
-      throw fail("backend", "must be \"approx\" or \"rtl\" (a sweep judges modeled time)");
+    if (!j["backend"].is_string() ||
+        std::find(timed_backends.begin(), timed_backends.end(), j["backend"].get<std::string>()) == timed_backends.end()) {
+      std::string choices;
+      for (const std::string& b : timed_backends) choices += (choices.empty() ? "\"" : " or \"") + b + "\"";
+      throw fail("backend", "must be " + choices + " (a sweep judges modeled time)");
+    }
     s.backend = j["backend"];
   }
   auto count = [&](const char* key, int lo, int hi) {
@@ -134,10 +138,10 @@ SweepSpec parse_sweep_spec(const std::string& text, const std::string& path) {
   return s;
 }
 
-SweepSpec read_sweep_spec(const std::string& path) {
+SweepSpec read_sweep_spec(const std::string& path, const std::vector<std::string>& timed_backends) {
   const std::optional<std::string> text = read_file_text(path);
   if (!text) throw InputError(path, 0, "cannot read the file");
-  return parse_sweep_spec(*text, path);
+  return parse_sweep_spec(*text, path, timed_backends);
 }
 
 }  // namespace girtd

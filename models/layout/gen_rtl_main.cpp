@@ -12,7 +12,7 @@
 #include "common/file_text.hpp"
 #include "common/input_error.hpp"
 #include "config/params.hpp"
-#include "config/rtl_package.hpp"
+#include "layout/rtl_package.hpp"
 
 namespace {
 

@@ -2,7 +2,7 @@
 // the SystemVerilog package (widths, the FIFO word's fields, the page
 // geometry, the DDA's state encoding), the U >= 2 product PROM table, and
 // the C++ header that records which values a build has. Written by
-// girtd_gen_rtl (models/config/gen_rtl_main.cpp) for the default build and
+// girtd_gen_rtl (models/layout/gen_rtl_main.cpp) for the default build and
 // for every RTL variant (sim/rtl/rtl_variants.hpp).
 #pragma once
 

@@ -22,6 +22,25 @@ struct SweepAxis {
   nlohmann::json settings(size_t i) const;
 };
 
+// What a row takes from its render's report.json: its column name and where
+// the report keeps it (a JSON pointer).
+struct ReportColumn {
+  const char* name;
+  const char* pointer;
+};
+inline constexpr ReportColumn kReportColumns[] = {
+    {"modeled_mpixels_per_s", "/modeled_mpixels_per_s"},
+    {"sustained_mpixels_per_s", "/sustained_mpixels_per_s"},
+    {"modeled_time_s", "/modeled_time_s"},
+    {"target_met", "/target_met"},
+    {"bottleneck", "/bottleneck"},
+    {"had_busy_s", "/stages/had/busy_s"},
+    {"had_page_wait_s", "/time_split/had_page_wait_s"},
+    {"cache_accesses", "/cache/accesses"},
+    {"page_misses", "/cache/page_misses"},
+    {"image_sha256", "/image_sha256"},
+    {"wall_s", "/wall_s"}};
+
 struct SweepSpec {
   std::string path;
   std::vector<std::string> inputs;    // resolved against the spec's folder
@@ -33,7 +52,10 @@ struct SweepSpec {
   size_t point_count() const;
 };
 
-SweepSpec parse_sweep_spec(const std::string& text, const std::string& path);
-SweepSpec read_sweep_spec(const std::string& path);
+// `timed_backends`: the back ends a sweep may name (it judges modeled time;
+// the registry's timed entries).
+SweepSpec parse_sweep_spec(const std::string& text, const std::string& path,
+                           const std::vector<std::string>& timed_backends);
+SweepSpec read_sweep_spec(const std::string& path, const std::vector<std::string>& timed_backends);
 
 }  // namespace girtd

@@ -12,7 +12,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "backends/series_switch.hpp"
+#include "timeline/series_switch.hpp"
 
 namespace girtd {
 
