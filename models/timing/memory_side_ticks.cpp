@@ -37,80 +37,122 @@ bool MemorySideTicks::idle() const {
 void MemorySideTicks::clear() { clear_in_ = true; }
 void MemorySideTicks::flush() { flush_in_ = true; }
 
-bool MemorySideTicks::quiet() const {
-  return state_ == State::kIdle && !flush_pending_ && !wb_pending_ && !pf_loading_ && fifo_count() == 0 && !vbusy_ &&
-         !clear_pending_ && !clear_in_ && !flush_in_ && steals_owed_ == 0;
-}
-
-void MemorySideTicks::run_until(uint64_t tick) {
-  while (now_ < tick) {
-    if (!quiet()) {
-      step();
-      continue;
-    }
-    // Nothing moves but the steal counter: up to the next pixel's arrival
-    // or the tick a stolen cycle comes due, whichever is first.
-    uint64_t k = tick - now_;
-    if (!fifo_.empty()) k = std::min(k, fifo_.back().tick + 1 - now_);
-    if (steal_period_) k = std::min(k, steal_period_ - 1 - steal_count_);
-    if (k == 0) {
-      step();
-      continue;
-    }
-    now_ += k;
-    if (steal_period_) steal_count_ += k;
-  }
-}
-
-void MemorySideTicks::step() {
+MemorySideTicks::Signals MemorySideTicks::signals() const {
   // ---- this tick's signals, from the registers (hw/vram, hw/had) ----
-  const uint64_t in_fifo = fifo_count();
-  fifo_max_ = std::max(fifo_max_, in_fifo);
-  const Entry* head = in_fifo ? &fifo_.front() : nullptr;
+  Signals g;
+  g.in_fifo = fifo_count();
+  const Entry* head = g.in_fifo ? &fifo_.front() : nullptr;
+  g.head = head;
 
-  const bool finishing = vbusy_ && left_ == 1;
-  const bool port_busy = vbusy_ && !finishing;
-  const bool steal_due = steals_owed_ != 0;
-  const bool vbusy_o = vram_busy();
-  const bool done = finishing && !clearing_ && !stealing_;
+  g.finishing = vbusy_ && left_ == 1;
+  g.port_busy = vbusy_ && !g.finishing;
+  g.steal_due = steals_owed_ != 0;
+  g.vbusy_o = vram_busy();
+  g.done = g.finishing && !clearing_ && !stealing_;
 
   const size_t hslot = head ? slot_of(head->page) : 0;
   const bool victim_valid = head && valid_[hslot];
-  const bool head_hit = victim_valid && page_[hslot] == head->page;
-  const bool must_write_back = victim_valid && (dirty_[hslot] || !dirty_bits_);
+  g.head_hit = victim_valid && page_[hslot] == head->page;
+  g.must_write_back = victim_valid && (dirty_[hslot] || !dirty_bits_);
   const bool head_in_pf = head && pf_page_ == head->page && (pf_valid_ || pf_loading_);
-  const size_t fslot = flush_slot_;
-  const bool flush_valid = valid_[fslot];
-  const bool flush_write_back = flush_valid && (dirty_[fslot] || !dirty_bits_);
-  const bool idle = state_ == State::kIdle;
-  const bool background_ok = idle || state_ == State::kAccess || state_ == State::kBlend;
-  const bool miss_go = idle && head && !head_hit && !(head_in_pf && pf_loading_) && !vbusy_o && !wb_pending_ &&
-                       !pf_loading_;
-  const bool flush_step = idle && flush_pending_ && !head && !vbusy_o && !wb_pending_ && !pf_loading_;
-  const bool wb_issue = background_ok && wb_pending_ && !vbusy_o;
-  const bool pf_issue = prefetch_ && background_ok && !idle && !wb_pending_ && !vbusy_o && !pf_valid_ &&
-                        !pf_loading_ && head && victim_valid && !head_hit;
-  const bool pop = idle && head && (head_hit || miss_go);
-  bool req = wb_issue || pf_issue;
+  g.fslot = flush_slot_;
+  g.flush_valid = valid_[g.fslot];
+  g.flush_write_back = g.flush_valid && (dirty_[g.fslot] || !dirty_bits_);
+  g.idle = state_ == State::kIdle;
+  g.background_ok = g.idle || state_ == State::kAccess || state_ == State::kBlend;
+  g.miss_go = g.idle && head && !g.head_hit && !(head_in_pf && pf_loading_) && !g.vbusy_o && !wb_pending_ &&
+              !pf_loading_;
+  g.flush_step = g.idle && flush_pending_ && !head && !g.vbusy_o && !wb_pending_ && !pf_loading_;
+  g.wb_issue = g.background_ok && wb_pending_ && !g.vbusy_o;
+  g.pf_issue = prefetch_ && g.background_ok && !g.idle && !wb_pending_ && !g.vbusy_o && !pf_valid_ && !pf_loading_ &&
+               head && victim_valid && !g.head_hit;
+  g.pop = g.idle && head && (g.head_hit || g.miss_go);
+  g.req = g.wb_issue || g.pf_issue;
   switch (state_) {
     case State::kIdle:
-      if (head && head_hit) break;
-      if (miss_go) req = req || (must_write_back && !write_behind_) || !(pf_valid_ && pf_page_ == head->page);
-      else if (flush_step && flush_write_back) req = true;
+      if (head && g.head_hit) break;
+      if (g.miss_go) g.req = g.req || (g.must_write_back && !write_behind_) || !(pf_valid_ && pf_page_ == head->page);
+      else if (g.flush_step && g.flush_write_back) g.req = true;
       break;
     case State::kWriteBack:
     case State::kRefetch:
-      if ((state_ == State::kRefetch || done) && !use_pf_ && !vbusy_o) req = true;
+      if ((state_ == State::kRefetch || g.done) && !use_pf_ && !g.vbusy_o) g.req = true;
       break;
     default:
       break;
   }
-  const bool cache_load = state_ == State::kFetch && (use_pf_ || done);
-  const bool cache_write =
+  g.cache_load = state_ == State::kFetch && (use_pf_ || g.done);
+  g.cache_write =
       (state_ == State::kAccess && count_ == 1 &&
        (pix_.outcome == HadOutcome::kWritten || (pix_.outcome == HadOutcome::kBlended && blend_ == 0))) ||
       (state_ == State::kBlend && count_ == 1);
-  const bool cache_invalidate = state_ == State::kFlush && (done || !flush_write_back);
+  g.cache_invalidate = state_ == State::kFlush && (g.done || !g.flush_write_back);
+  g.vram_wait = state_ == State::kWriteBack || state_ == State::kRefetch || (state_ == State::kFetch && !use_pf_) ||
+                (g.idle && head && !g.head_hit && !g.pop);
+  return g;
+}
+
+// How many ticks from now() on only count: no request, no pop, no state
+// change, no cache change, no steal or clear, the FIFO's visible count the
+// same. signals() would give each of them the same values, so run_until
+// takes them at once.
+uint64_t MemorySideTicks::counting_ticks(const Signals& g, uint64_t tick) const {
+  if (clear_in_ || flush_in_ || steals_owed_ != 0 || clear_pending_) return 0;
+  if (g.req || g.pop || g.miss_go || g.flush_step || g.wb_issue || g.pf_issue || g.cache_load || g.cache_write ||
+      g.cache_invalidate || g.finishing)
+    return 0;
+  uint64_t k = tick - now_;
+  switch (state_) {
+    case State::kIdle:
+    case State::kFlush:  // stays until `done` (finishing, excluded above) when its page is written back
+      break;
+    case State::kAccess:
+    case State::kBlend:
+      k = std::min(k, count_ - 1);  // the last tick writes the cache and moves on
+      break;
+    case State::kWriteBack:
+    case State::kFetch:
+      if (use_pf_) return 0;
+      break;
+    case State::kRefetch:
+      if (!g.vbusy_o) return 0;
+      break;
+  }
+  if (vbusy_) k = std::min(k, left_ - 1);  // the port's last tick finishes it
+  if (steal_period_) k = std::min(k, steal_period_ - 1 - steal_count_);
+  // A pixel pushed on tick t is seen from t + 1.
+  if (!fifo_.empty() && fifo_.back().tick >= now_) k = std::min(k, fifo_.back().tick + 1 - now_);
+  return k;
+}
+
+void MemorySideTicks::run_until(uint64_t tick) {
+  while (now_ < tick) {
+    const Signals g = signals();
+    const uint64_t k = counting_ticks(g, tick);
+    if (k == 0) {
+      edge(g);
+      continue;
+    }
+    now_ += k;
+    if (steal_period_) steal_count_ += k;
+    if (vbusy_) left_ -= k;
+    if (state_ == State::kAccess || state_ == State::kBlend) count_ -= k;
+    if (!g.idle) busy_ticks_ += k;
+    if (g.vram_wait) vram_wait_ticks_ += k;
+    fifo_max_ = std::max(fifo_max_, g.in_fifo);
+  }
+}
+
+void MemorySideTicks::edge(const Signals& g) {
+  fifo_max_ = std::max(fifo_max_, g.in_fifo);
+  const Entry* head = g.head;
+  const bool finishing = g.finishing, port_busy = g.port_busy, steal_due = g.steal_due, vbusy_o = g.vbusy_o,
+             done = g.done, head_hit = g.head_hit, must_write_back = g.must_write_back, flush_valid = g.flush_valid,
+             flush_write_back = g.flush_write_back, idle = g.idle, background_ok = g.background_ok,
+             miss_go = g.miss_go, flush_step = g.flush_step, wb_issue = g.wb_issue, pf_issue = g.pf_issue,
+             pop = g.pop, req = g.req, cache_load = g.cache_load, cache_write = g.cache_write,
+             cache_invalidate = g.cache_invalidate;
+  const size_t fslot = g.fslot;
 
   // ---- the clock edge: hw/vram ----
   const bool steal_comes_due = steal_period_ && steal_count_ + 1 >= steal_period_;
@@ -167,9 +209,7 @@ void MemorySideTicks::step() {
     pf_valid_ = true;
   }
   if (!idle || pop) ++busy_ticks_;
-  if (state_ == State::kWriteBack || state_ == State::kRefetch || (state_ == State::kFetch && !use_pf_) ||
-      (idle && head && !head_hit && !pop))
-    ++vram_wait_ticks_;
+  if (g.vram_wait) ++vram_wait_ticks_;
   switch (state_) {
     case State::kIdle:
       if (pop) {

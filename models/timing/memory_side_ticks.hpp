@@ -6,8 +6,8 @@
 // prefetch the HAD acts on whichever pixel is at the FIFO's head on each
 // tick, and with stolen VRAM cycles the port follows a free-running counter,
 // so those two options are stepped here, like the RTL, tick for tick.
-// State n is the registers after n ticks; step() evaluates state n and
-// takes the clock edge, as the RTL does.
+// State n is the registers after n ticks; signals() evaluates state n and
+// edge() takes the clock edge, as the RTL does.
 #pragma once
 
 #include <cstdint>
@@ -54,9 +54,21 @@ class MemorySideTicks {
     uint32_t page;
     HadOutcome outcome;
   };
-  void step();
+  // One tick's combinational signals, evaluated from the registers.
+  struct Signals {
+    uint64_t in_fifo = 0;
+    const Entry* head = nullptr;
+    bool finishing, port_busy, steal_due, vbusy_o, done, head_hit, must_write_back, flush_valid, flush_write_back,
+        idle, background_ok, miss_go, flush_step, wb_issue, pf_issue, pop, req, cache_load, cache_write,
+        cache_invalidate, vram_wait;
+    size_t fslot = 0;
+  };
+  Signals signals() const;
+  void edge(const Signals& g);  // the clock edge: state n -> n + 1
+  // Ticks from now() (up to `tick`) on which nothing but counters moves:
+  // run_until takes them at once.
+  uint64_t counting_ticks(const Signals& g, uint64_t tick) const;
   bool vram_busy() const;
-  bool quiet() const;  // nothing can change but the steal counter until a pixel arrives
   size_t slot_of(uint32_t page) const { return size_t(layout_.cache.slot_of(page)); }
   void start_vram();  // an operation of cycle_ length
 
