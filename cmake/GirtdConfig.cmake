@@ -1,15 +1,28 @@
-# Turns config/girtd.json (the single description of widths, formats and
-# timings) into a C++ header that embeds it verbatim. The C++ side parses the
-# embedded text at start-up (models/config/params.cpp), so no number is ever
-# written twice.
-function(girtd_generate_config_header json_file out_header)
+# Turns config/girtd.json (the knobs: widths, formats and timings a
+# configuration may set) and config/constants.json (the design's fixed
+# constants, each with the reason it cannot change) into C++ headers: one
+# embeds both files verbatim (parsed at start-up, models/config/params.cpp),
+# one gives the constants as constexpr values. No number is written twice.
+function(girtd_generate_config_header json_file constants_file out_header)
   file(READ ${json_file} GIRTD_CONFIG_JSON)
   string(JSON _probe ERROR_VARIABLE _err GET "${GIRTD_CONFIG_JSON}" ep)
   if(_err)
     message(FATAL_ERROR "${json_file}: not valid JSON: ${_err}")
   endif()
-  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${json_file})
+  file(READ ${constants_file} GIRTD_CONSTANTS_JSON)
+  foreach(pair "SCREEN_WIDTH;screen;width" "SCREEN_HEIGHT;screen;height" "COLOR_OUT_BITS;ep;color;out_bits"
+               "T_OUT_BITS;ep;t;out_bits" "Z_OUT_BITS;ep;z;out_bits" "NORM_FRAC_BITS;nf;norm_frac_bits")
+    list(POP_FRONT pair name)
+    string(JSON value ERROR_VARIABLE _err GET "${GIRTD_CONSTANTS_JSON}" ${pair} value)
+    if(_err)
+      message(FATAL_ERROR "${constants_file}: ${_err}")
+    endif()
+    set(GIRTD_${name} ${value})
+  endforeach()
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${json_file} ${constants_file})
   configure_file(${CMAKE_SOURCE_DIR}/cmake/default_config.hpp.in ${out_header} @ONLY)
+  get_filename_component(out_dir ${out_header} DIRECTORY)
+  configure_file(${CMAKE_SOURCE_DIR}/cmake/design_constants.hpp.in ${out_dir}/design_constants.hpp @ONLY)
 endfunction()
 
 # The SystemVerilog side: girtd_gen_rtl (models/layout/gen_rtl_main.cpp)
@@ -33,7 +46,8 @@ function(girtd_generate_rtl_package out_dir)
   if(NOT EXISTS ${tool})
     set(stale TRUE)
   endif()
-  foreach(f ${sources} ${headers} ${CMAKE_BINARY_DIR}/generated/girtd/default_config.hpp)
+  foreach(f ${sources} ${headers} ${CMAKE_BINARY_DIR}/generated/girtd/default_config.hpp
+            ${CMAKE_BINARY_DIR}/generated/girtd/design_constants.hpp)
     if(${f} IS_NEWER_THAN ${tool})
       set(stale TRUE)
     endif()

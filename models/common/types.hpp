@@ -5,6 +5,8 @@
 #include <array>
 #include <cstdint>
 
+#include "girtd/design_constants.hpp"
+
 namespace girtd {
 
 // A screen-space vertex: x, y in pixels (y down, pixel (x, y) sampled at the
@@ -47,8 +49,8 @@ struct FrameSettings {
   bool qq = false;  // thesis program's QQ switch: antialiasing off, nf < 1 dropped
 };
 
-// nf is 1.8 fixed point: 256 = 1.0.
-inline constexpr int kNfOne = 256;
+// nf is 1.8 fixed point: 1 << nf.norm_frac_bits (256) = 1.0.
+inline constexpr int kNfOne = 1 << kNormFracBits;
 
 // One pixel leaving the DDA (the 69-bit FIFO word, with full-width X, Y so
 // the HAD can drop off-screen pixels of back ends that produce them).

@@ -25,7 +25,31 @@ ConfigLayers ConfigLayers::builtin() {
     }
   };
   find_nullable(c.merged_, "");
+  c.add_constants();
   return c;
+}
+
+// config/constants.json's leaves ({"value", "why"}) join the tree at their
+// paths, so the merged configuration (report.json's `config`) has them like
+// any key; merge() refuses another value for one of them.
+void ConfigLayers::add_constants() {
+  const std::string text = kDesignConstantsJson;
+  const std::map<std::string, int> lines = json_key_lines(text);
+  std::function<void(const json&, json&, const std::string&)> walk = [&](const json& j, json& into,
+                                                                          const std::string& path) {
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      const std::string key = path.empty() ? it.key() : path + "." + it.key();
+      if (it->contains("value")) {
+        into[it.key()] = it->at("value");
+        constants_[key] = {it->at("value"), it->at("why").get<std::string>()};
+        const auto line = lines.find(key);
+        places_[key] = {kDesignConstantsPath, line == lines.end() ? 0 : line->second, 0};
+      } else {
+        walk(*it, into[it.key()], key);
+      }
+    }
+  };
+  walk(json::parse(text), merged_, "");
 }
 
 void ConfigLayers::merge_file(const std::string& path) {
@@ -54,6 +78,12 @@ void ConfigLayers::merge(json& base, const json& patch, const std::string& path,
     const int at = line == lines.end() ? 0 : line->second;
     if (!base.contains(it.key())) throw InputError(origin, at, key + ": unknown configuration key");
     json& target = base[it.key()];
+    if (const auto constant = constants_.find(key); constant != constants_.end()) {
+      if (*it != constant->second.value)
+        throw InputError(origin, at, key + ": fixed by the design at " + constant->second.value.dump() + " (" +
+                                         constant->second.why + "): not a setting");
+      continue;
+    }
     if (target.is_object()) {
       if (!it->is_object()) throw InputError(origin, at, key + ": must be an object");
       merge(target, *it, key, origin, lines);

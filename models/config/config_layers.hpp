@@ -1,5 +1,7 @@
-// The configuration as layers: the built-in config/girtd.json, then each
-// --config file merged over it in order (the later wins). Every leaf key
+// The configuration as layers: the built-in config/girtd.json with the
+// design's fixed constants (config/constants.json) in it, then each
+// --config file merged over it in order (the later wins); a file that gives
+// a constant another value is refused, with the constant's reason. Every leaf key
 // remembers the file and line that set it last, so a value refused later
 // (a range, a relation) is reported where the user wrote it:
 // "FILE:LINE: key: what".
@@ -18,7 +20,7 @@ namespace girtd {
 
 class ConfigLayers {
  public:
-  // config/girtd.json as built in.
+  // config/girtd.json as built in, with config/constants.json in it.
   static ConfigLayers builtin();
 
   // Merges one user file; unknown keys and values of another JSON type are
@@ -41,10 +43,16 @@ class ConfigLayers {
     int line = 0;
     int layer = 0;  // 0: built in; 1, 2, ...: the user's files and patches in order
   };
+  struct Constant {
+    nlohmann::json value;
+    std::string why;
+  };
+  void add_constants();
   void merge(nlohmann::json& base, const nlohmann::json& patch, const std::string& path, const std::string& origin,
              const std::map<std::string, int>& lines);
   nlohmann::json merged_;
   std::map<std::string, Place> places_;
+  std::map<std::string, Constant> constants_;  // dotted key -> its value and reason
   std::set<std::string> nullable_;  // keys null in the built-in configuration: a number or null
   std::vector<std::string> files_;
   int layers_ = 0;

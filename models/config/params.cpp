@@ -8,6 +8,7 @@
 #include "common/input_error.hpp"
 #include "config/config_layers.hpp"
 #include "config/rtl_widths.hpp"
+#include "girtd/design_constants.hpp"
 
 namespace girtd {
 namespace {
@@ -80,20 +81,17 @@ Params build(const ConfigLayers& layers) {
   const Reader r(layers);
   Params p;
   try {
-    // GIRTD's frame is the VRAM: 1M words of 1024 x 1024 pixels.
-    p.screen_width = r.integer("screen.width", 1024, 1024);
-    p.screen_height = r.integer("screen.height", 1024, 1024);
+    // The screen, the output widths and nf's fraction are the design's
+    // constants (config/constants.json: a configuration cannot change them).
+    p.screen_width = r.integer("screen.width", kScreenWidth, kScreenWidth);
+    p.screen_height = r.integer("screen.height", kScreenHeight, kScreenHeight);
     p.ep_color = format_of(r, "ep.color", true);
     p.ep_t = format_of(r, "ep.t", true);
     p.ep_z = format_of(r, "ep.z", true);
     p.ep_d = format_of(r, "ep.d", false);
-    // The HAD multiplies 8-bit colour and T and compares 16-bit Z.
-    if (p.ep_color.out_bits != 8) r.fail("ep.color.out_bits", "must be 8: the HAD takes 8-bit colour");
-    if (p.ep_t.out_bits != 8) r.fail("ep.t.out_bits", "must be 8: the HAD takes 8-bit T");
-    if (p.ep_z.out_bits != 16) r.fail("ep.z.out_bits", "must be 16: the VRAM holds 16-bit Z");
     p.xy_bits = r.integer("ep.xy_bits", 11, 32);  // X, Y up to 1023 and a sign
     p.wrap_guard_bits = r.integer("ep.wrap_guard_bits", 1, 32);
-    p.norm_frac_bits = r.integer("nf.norm_frac_bits", 8, 8);  // the HAD multiplies 8 x 8 bits
+    p.norm_frac_bits = r.integer("nf.norm_frac_bits", kNormFracBits, kNormFracBits);
     p.prom_frac_bits = r.integer("nf.prom_frac_bits", 1, 8);
     if (p.ep_d.frac_bits < p.norm_frac_bits)
       r.fail_relation({"ep.d.frac_bits", "nf.norm_frac_bits"}, "ep.d.frac_bits must be at least nf.norm_frac_bits");

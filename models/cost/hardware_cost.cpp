@@ -12,9 +12,9 @@ constexpr double kRegisterBitsPerChip = 8, kAdderBitsPerChip = 4;
 constexpr double kFifoWordsPerChip = 64, kFifoBitsPerChip = 4;
 constexpr double kVramBitsPerChip = 65536.0 * 4;
 constexpr double kBoardFlopsPerS = 10e6, kChipsPerBoard = 60;
-// The thesis' timings are TTL's: faster needs ECL (the DDA clock; the HAD's
-// access or its blend).
-constexpr double kTtlDdaNs = 35, kTtlHadNs = 25, kTtlBlendNs = 50, kEclFactor = 2;
+// The thesis' timings (config/girtd.json's defaults) are TTL's: faster needs
+// ECL (the DDA clock; the HAD's access or its blend), at this factor.
+constexpr double kEclFactor = 2;
 
 double chips(double bits, double per_chip) { return std::ceil(bits / per_chip); }
 
@@ -34,11 +34,13 @@ HardwareCost hardware_cost(const Params& p) {
   if (p.had_dirty_bits) c.cache_bits += p.cache_pages;
   if (p.had_write_behind) c.write_behind_bits = page_bits + l.page.number_bits + 1;
   if (p.had_prefetch) c.prefetch_bits = page_bits + l.page.number_bits + 2;
-  const double frame_bits = double(p.screen_width) * p.screen_height * (2 * 24 + 16);  // two RGB buffers and Z
+  const double frame_bits = double(p.screen_width) * p.screen_height * l.vram.width;  // two RGB buffers and Z
   c.vram_chips = int(std::max(chips(frame_bits, kVramBitsPerChip), chips(page_bits, 4)));
   for (const auto& [stage, rate] : p.stage_rate_flops_per_s) c.front_end_boards += int(std::ceil(rate / kBoardFlopsPerS));
-  c.dda_clock_class = p.dda_clock_ns < kTtlDdaNs ? "ECL" : "TTL";
-  c.had_clock_class = p.had_access_ns < kTtlHadNs || p.had_blend_extra_ns < kTtlBlendNs ? "ECL" : "TTL";
+  static const Params thesis = Params::defaults();
+  c.dda_clock_class = p.dda_clock_ns < thesis.dda_clock_ns ? "ECL" : "TTL";
+  c.had_clock_class =
+      p.had_access_ns < thesis.had_access_ns || p.had_blend_extra_ns < thesis.had_blend_extra_ns ? "ECL" : "TTL";
   const double dda_factor = c.dda_clock_class == "ECL" ? kEclFactor : 1, had_factor = c.had_clock_class == "ECL" ? kEclFactor : 1;
   c.dda_chips = dda_factor * (chips(c.ep_register_bits, kRegisterBitsPerChip) + chips(c.adder_bits, kAdderBitsPerChip));
   c.fifo_chips = std::ceil(p.fifo_max_depth / kFifoWordsPerChip) * chips(l.fifo.width, kFifoBitsPerChip);

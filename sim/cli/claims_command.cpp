@@ -60,7 +60,7 @@ void dda_rows(const Params& p, std::vector<ClaimRow>& rows) {
                       verdict(up.mean_wasted + down.mean_wasted, up.mean_thesis_wasted + down.mean_thesis_wasted)});
       rows.push_back({"DDA pixel rate at " + format_numbers("%.0f ns, ", p.dda_clock_ns) + cfg, "20 Mpixel/s (200 px)",
                       format_numbers("%.1f Mpixel/s (emitted %.0f px)", mean_eff * mhz, (up.mean_emitted + down.mean_emitted) / 2),
-                      verdict(mean_eff * mhz, 20.0)});
+                      verdict(mean_eff * mhz, p.target_mpixels_per_s)});
     }
   }
   rows.push_back({"DDA peak rate at " + format_numbers("%.0f ns", p.dda_clock_ns), "28 Mpixel/s",
@@ -233,7 +233,7 @@ void memory_rows(const Params& p, std::vector<ClaimRow>& rows) {
   rows.push_back({"end-to-end rate, memory side as written (RTL back end)",
                   "implied >= 20; best case 19, estimate ~10.7 Mpixel/s",
                   "Mpixel/s " + rates + "with write-behind " + rates_wb + "with write-behind and prefetch " + rates_pf,
-                  worst >= 20 * 0.95 ? "confirmed" : "refuted"});
+                  worst >= p.target_mpixels_per_s * 0.95 ? "confirmed" : "refuted"});
 
   std::string waits;
   bool waits_at_16 = false, measured_16 = false;

@@ -28,12 +28,13 @@ size_t differing(const std::vector<T>& a, const std::vector<T>& b) {
 
 void check_trace(const std::string& path, const Params& p = Params::defaults()) {
   const TimingComparison c = compare_timing(p, path);
+  const uint64_t per_clock = uint64_t(p.ticks(p.dda_clock_ns));  // base ticks per DDA clock
   INFO(path << ": model " << c.model.ticks << " ticks, RTL " << c.rtl.ticks << "; misses " << c.model.page_misses
             << " / " << c.rtl.page_misses << "; DDA waits " << c.model.dda_wait_clocks << " / "
-            << c.rtl.dda_wait_ticks / 7);
+            << c.rtl.dda_wait_ticks / per_clock);
   CHECK(c.model.page_misses == c.rtl.page_misses);
   CHECK(c.model.pixels == c.rtl.pixels_generated);
-  CHECK(c.model.dda_wait_clocks * 7 == c.rtl.dda_wait_ticks);  // 7 ticks per DDA clock (35 ns / 5 ns)
+  CHECK(c.model.dda_wait_clocks * per_clock == c.rtl.dda_wait_ticks);
   CHECK(c.model.ticks == c.rtl.ticks);
   CHECK(c.model.had_busy_ticks == c.rtl.had_busy_ticks);
   CHECK(c.model.had_vram_wait_ticks == c.rtl.had_vram_wait_ticks);

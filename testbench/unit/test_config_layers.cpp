@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/json_text.hpp"
+#include "common/types.hpp"
 #include "config/params.hpp"
 #include "frontend/input_test_support.hpp"
 
@@ -46,6 +47,31 @@ TEST_CASE("configuration files merge in order and the later wins", "[params]") {
   const Params ba = Params::from_files({b, a});
   CHECK(ba.fifo_dda_had_depth == 8);
   CHECK(Params::from_files({}).fifo_dda_had_depth == 16);  // config/girtd.json
+}
+
+TEST_CASE("the design's constants are in the configuration and cannot be changed", "[params]") {
+  // config/constants.json's values, as the thesis fixes them (GIRTD.md):
+  // a 1024 x 1024 screen, 8-bit colour and T, 16-bit Z, nf with 8 fraction bits.
+  const Params d = Params::defaults();
+  CHECK(d.screen_width == 1024);
+  CHECK(d.screen_height == 1024);
+  CHECK(d.ep_color.out_bits == 8);
+  CHECK(d.ep_t.out_bits == 8);
+  CHECK(d.ep_z.out_bits == 16);
+  CHECK(d.norm_frac_bits == 8);
+  CHECK(kNfOne == 256);
+  CHECK(d.source.at("screen").at("width") == 1024);  // echoed in report.json's config like any key
+  // The same value is no change; another is refused at its line, with the reason.
+  const std::string same = temp_file("cfg_same.json", "{\"ep\": {\"z\": {\"out_bits\": 16}}}");
+  CHECK(error_of([&] { Params::from_files({same}); }).empty());
+  const std::string z12 = temp_file("cfg_z12.json",
+                                    "{\n"
+                                    "  \"ep\": {\n"
+                                    "    \"z\": { \"out_bits\": 12 }\n"
+                                    "  }\n"
+                                    "}\n");
+  CHECK(error_of([&] { Params::from_files({z12}); }) ==
+        z12 + ":3: ep.z.out_bits: fixed by the design at 16 (the VRAM holds 16-bit Z): not a setting");
 }
 
 TEST_CASE("a refused configuration value is reported at the line that set it", "[params]") {
