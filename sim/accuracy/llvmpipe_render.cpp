@@ -8,11 +8,13 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "girtd/design_constants.hpp"
+
 namespace girtd {
 
 namespace {
 
-constexpr double kDepthUnits = 65535.0;  // GIRTD's 16-bit Z: GL's 0..1
+constexpr double kDepthUnits = (1 << kZOutBits) - 1;  // GIRTD's 16-bit Z: GL's 0..1
 
 }  // namespace
 

@@ -18,7 +18,8 @@ EpErrorSample measure_ep_error(const Params& p, int triangles, double span, int 
   FrameSettings f;
   f.q = 1;
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> coord(0, span), colour(0, 255), depth(0, 65534), opacity(0, 1);
+  std::uniform_real_distribution<double> coord(0, span), colour(0, (1 << p.ep_color.out_bits) - 1),
+      depth(0, p.depth_max_mapped), opacity(0, 1);
   EpErrorSample s;
   for (int n = 0; n < triangles; ++n) {
     Triangle t;

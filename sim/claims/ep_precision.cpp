@@ -39,7 +39,8 @@ double ep_error_after_steps(const Params& p, EpKind ep, int steps, int triangles
   FrameSettings f;
   f.q = 1;
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> coord(0, 1023), colour(0, 255), depth(0, 65534), opacity(0, 1);
+  std::uniform_real_distribution<double> coord(0, p.screen_width - 1), colour(0, (1 << p.ep_color.out_bits) - 1),
+      depth(0, p.depth_max_mapped), opacity(0, 1);
   Params formats = p;
   const FixFormat& fmt = ep_format(formats, ep);
   double worst = 0;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "frontend/interior_edges.hpp"
+#include "girtd/design_constants.hpp"
 
 namespace girtd {
 namespace {
@@ -47,7 +48,7 @@ std::vector<StressCase> huge() {
     const double far = std::min(1e6, 2 * o + 3000);  // the input limit is 1e6
     const std::string n = label(o);
     const bool fast = o == 1500 || o == 1e6;
-    const double lo = -o, hi = std::min(1023 + o, 1e6);  // the input limit is 1e6
+    const double lo = -o, hi = std::min(kScreenWidth - 1 + o, 1e6);  // the input limit is 1e6
     out.push_back(trace_case("huge", "cover_" + n, "screen-filling triangle, corners " + n + " px beyond the screen",
                              fast,
                              {tri(vtx(lo, lo, 30000, 200, 100, 50), vtx(hi, lo, 30000, 200, 100, 50),
