@@ -1,12 +1,9 @@
 #include "backends/render_session.hpp"
 
-#include <chrono>
-#include <cstdio>
-#include <memory>
-
 #include "common/input_error.hpp"
 #include "dda/dda_preparer.hpp"
 #include "backends/dump_tap.hpp"
+#include "backends/frame_driver.hpp"
 
 namespace girtd {
 
@@ -24,10 +21,10 @@ RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& pa
   // --dump: the input as it came, the front end's triangles as drawn, or the
   // DDA parameter sets as the back end draws them.
   const Trace& input = opt.polygon_source ? *opt.polygon_source : trace;
-  std::unique_ptr<DumpTap> tap;
-  if (opt.dump) tap = std::make_unique<DumpTap>(*opt.dump, input, params);
+  FrameDriver driver(backend.name(), input, params, opt);
+  DumpTap* tap = driver.tap();
   const bool dda_tap = tap && tap->level() == TraceLevel::kDda;
-  if (dda_tap && !backend.tap_dda([&tap](const DdaParams& d) { tap->write(d); }))
+  if (dda_tap && !backend.tap_dda([tap](const DdaParams& d) { tap->write(d); }))
     throw InputError(opt.dump->path, 0, "the " + backend.name() + " back end has no DDA: dump dda from golden, approx or rtl");
 
   // The video memory exists before the run starts, as the hardware's does
@@ -35,13 +32,11 @@ RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& pa
   // first touching its 12 MB is not drawing. Each frame's clear is timed.
   FrameBuffer fb(params.screen_width, params.screen_height, static_cast<uint16_t>(params.depth_clear));
   Had had(fb, params.one_minus_nf);
-  using clock = std::chrono::steady_clock;
-  const auto t0 = clock::now();
+  driver.start();
   RenderOutput out;
   // The thesis program draws a 128 x 96 picture in the frame's top-left corner.
   if (trace.level == TraceLevel::kThesis) had.set_screen(params.thesis.width, params.thesis.height);
   const size_t n_frames = trace.frames.size();
-  bool printed = false;
   for (size_t i = 0; i < n_frames; ++i) {
     const TraceFrame& f = trace.frames[i];
     if (dda_tap) tap->begin_frame(f.settings);
@@ -51,20 +46,16 @@ RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& pa
     backend.draw_frame(f, had, out.stats);
     fb.swap();
     ++out.stats.frames;
-    if (opt.keep_all_frames) out.per_frame.push_back(shown_image(fb));
-    if (opt.progress && std::chrono::duration<double>(clock::now() - t0).count() > 1.0) {
-      std::fprintf(stderr, "\r[girtd] %s: frame %zu/%zu", backend.name().c_str(), i + 1, n_frames);
-      printed = true;
-    }
+    driver.frame_ended([&] { return shown_image(fb); });
+    driver.progress(i, i + 1, n_frames, "frames");
   }
-  if (printed) std::fprintf(stderr, "\n");
   out.stats.had = had.counts();
   backend.finish(out.stats);
-  out.stats.wall_s = std::chrono::duration<double>(clock::now() - t0).count();
+  out.stats.wall_s = driver.wall_s();
   out.shown = shown_image(fb);
   out.z = fb.z_plane();
-  if (dda_tap) backend.tap_dda({});  // the tap dies with this function
-  if (tap) tap->commit();
+  if (dda_tap) backend.tap_dda({});  // the tap dies with the driver
+  driver.finish(out);
   return out;
 }
 

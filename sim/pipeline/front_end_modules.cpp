@@ -13,6 +13,8 @@ void PipelineElaboration::build_from_polygons(const Trace& polygons) {
   count_front_end_pass();
   polygon_source_ = &polygons;
   for (const TraceFrame& f : polygons.frames) objects_.push_back(frame_objects(f.world));
+  // The progress line counts the objects the culling stage has taken.
+  for (const auto& o : objects_) total_items_ += o.size();
   auto& src = source<WorldObject>(objects_);
 
   // Culling, in front of lighting: an object's bounding sphere (when

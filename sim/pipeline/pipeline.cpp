@@ -2,8 +2,8 @@
 
 #include <systemc>
 
-#include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -33,8 +33,9 @@ void check_pipeline_input(const Trace& trace) {
 }  // namespace
 
 PipelineElaboration::PipelineElaboration(const BackendEntry& backend, const Trace& input, const Params& p,
-                                         const RenderOptions& opt, DumpTap* tap)
-    : p_(p), opt_(opt), engine_(make_engine(backend, p, opt)), backend_(backend.name) {
+                                         const RenderOptions& opt, FrameDriver& driver)
+    : p_(p), opt_(opt), engine_(make_engine(backend, p, opt)), driver_(driver) {
+  DumpTap* tap = driver.tap();
   engine_->prune(opt.prune);
   for (const TraceFrame& f : input.frames) settings_.push_back(f.settings);
   // The stream that entered is dumped as it is; one made inside, by the
@@ -43,8 +44,8 @@ PipelineElaboration::PipelineElaboration(const BackendEntry& backend, const Trac
     for (const TraceFrame& f : input.frames) tap->frame(f);
   else
     tap_ = tap;
-  for (const TraceFrame& f : input.frames)  // for the progress line
-    total_items_ += f.triangles.size() + f.dda.size() + f.world.polygons.size();
+  for (const TraceFrame& f : input.frames)  // for the progress line (polygon input: build_from_polygons)
+    total_items_ += f.triangles.size() + f.dda.size();
   if (input.level == TraceLevel::kPolygon) build_from_polygons(input);
   else if (input.level == TraceLevel::kTriangle) build_from_triangles(input);
   else build_from_dda(input);
@@ -52,15 +53,13 @@ PipelineElaboration::PipelineElaboration(const BackendEntry& backend, const Trac
 
 RenderOutput PipelineElaboration::run() {
   if (opt_.wave) start_wave(*opt_.wave);
-  const auto t0 = std::chrono::steady_clock::now();
-  wall0_ = t0;
+  driver_.start();
   sc_core::sc_start();
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double wall = driver_.wall_s();
   if (!back_end_->finished())
     throw std::logic_error("the pipeline stopped before the back end saw the end of the run (a deadlock)");
-  if (progress_printed_) std::fprintf(stderr, "\n");
   RenderOutput out;
-  out.per_frame = std::move(per_frame_);
+  driver_.finish(out);
   collect(out.stats);
   out.shown = engine_->shown();
   out.z = engine_->z_plane();
@@ -79,23 +78,18 @@ void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
   in_fifo_[&a] = &in_record;
   back_activity_ = &a;
   BackendStage::FrameDone done;
-  if (opt_.keep_all_frames) done = [this](size_t) { per_frame_.push_back(engine_->shown()); };
+  done = [this](size_t) { driver_.frame_ended([this] { return engine_->shown(); }); };
   BackendStage::Progress progress;
   if (opt_.progress)
     progress = [this](size_t frame, uint64_t triangles, double modeled_s) {
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
-      if (wall < 1.0) return;
       // Polygon input: the triangle count is known only as the front end
-      // makes them, so the share done is of the polygons lit.
+      // makes them, so the share done is of the objects the first stage took.
       const bool polygons = polygon_source_ != nullptr;
       const uint64_t done = polygons ? activities_.front()->items : triangles;
-      char drawn[48] = "";
-      if (polygons) std::snprintf(drawn, sizeof drawn, ", %llu triangles drawn", static_cast<unsigned long long>(triangles));
-      std::fprintf(stderr, "\r[girtd] %s: frame %zu/%zu, %llu/%llu %s (%.0f %%)%s, %.3f ms modeled, %.1f s wall ",
-                   backend_.c_str(), frame + 1, settings_.size(), static_cast<unsigned long long>(done),
-                   static_cast<unsigned long long>(total_items_), polygons ? "polygons lit" : "triangles",
-                   total_items_ ? 100.0 * double(done) / double(total_items_) : 0.0, drawn, modeled_s * 1e3, wall);
-      progress_printed_ = true;
+      char detail[96] = "";
+      if (polygons) std::snprintf(detail, sizeof detail, ", %llu triangles drawn", static_cast<unsigned long long>(triangles));
+      std::snprintf(detail + std::strlen(detail), sizeof detail - std::strlen(detail), ", %.3f ms modeled", modeled_s * 1e3);
+      driver_.progress(frame, done, total_items_, polygons ? "objects in" : "triangles", detail);
     };
   back_end_ = std::make_unique<BackendStage>("back_end", *engine_, settings_, p_.base_tick_ns, p_.dda_clock_ns, a, in_record,
                                              std::move(done), std::move(progress));
@@ -127,12 +121,9 @@ RenderOutput run_pipeline(const BackendEntry& backend, const Trace& input, const
         if (s != "pipeline" && s.rfind("pipeline.", 0) != 0)
           throw InputError("--wave-scope", 0, "'" + s + "': " + backend.name + " records the SystemC side alone (pipeline...)");
   }
-  std::unique_ptr<DumpTap> tap;  // checked before the run, committed after it
-  if (opt.dump) tap = std::make_unique<DumpTap>(*opt.dump, input, p);
-  PipelineElaboration pipeline(backend, input, p, opt, tap.get());
-  RenderOutput out = pipeline.run();
-  if (tap) tap->commit();
-  return out;
+  FrameDriver driver(backend.name, input, p, opt);  // the dump checked before the run, committed after it
+  PipelineElaboration pipeline(backend, input, p, opt, driver);
+  return pipeline.run();
 }
 
 }  // namespace girtd

@@ -6,7 +6,6 @@
 
 #include <systemc>
 
-#include <chrono>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -19,6 +18,7 @@
 #include "frontend/front_end_stages.hpp"
 #include "backends/backend_engine.hpp"
 #include "backends/backend_entry.hpp"
+#include "backends/frame_driver.hpp"
 #include "pipeline/backend_stage.hpp"
 #include "pipeline/source_stage.hpp"
 #include "pipeline/timed_stage.hpp"
@@ -30,9 +30,9 @@ using sc_core::sc_fifo;
 
 class PipelineElaboration {
  public:
-  // `tap`: --dump's, or nullptr.
+  // `driver`: what runs around the frames (its tap: --dump's, or none).
   PipelineElaboration(const BackendEntry& backend, const Trace& input, const Params& p, const RenderOptions& opt,
-                      DumpTap* tap);
+                      FrameDriver& driver);
 
   RenderOutput run();
 
@@ -115,7 +115,7 @@ class PipelineElaboration {
   const Params& p_;
   const RenderOptions& opt_;
   std::unique_ptr<BackendEngine> engine_;
-  std::string backend_;
+  FrameDriver& driver_;  // the dump tap, kept frames, progress, wall clock
   std::vector<FrameSettings> settings_;
   const Trace* polygon_source_ = nullptr;
   std::vector<std::vector<WorldObject>> objects_;
@@ -132,9 +132,6 @@ class PipelineElaboration {
   std::map<const StageActivity*, const FifoActivity*> in_fifo_;  // each stage's input FIFO
   std::map<const void*, std::unique_ptr<FifoActivity>> fifo_records_;
   StageActivity* back_activity_ = nullptr;
-  std::vector<RgbImage> per_frame_;
-  std::chrono::steady_clock::time_point wall0_;
-  bool progress_printed_ = false;
   std::unique_ptr<WaveRecorder> wave_;
   uint64_t total_items_ = 0;
   DumpTap* tap_ = nullptr;  // a stream made inside the pipeline (the preparer's input or output)

@@ -44,6 +44,15 @@ printf 'girtd-trace 1 triangle\ntri 0 0 0 0 0 0 1  9 0 0 0 0 0 nan  0 9 0 0 0 0 
 "$GIRTD" render traces/equilateral_200.trace --backend nosuch --out "$TMP/nosuch" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 && ! -e "$TMP/nosuch" && $(wc -l < "$TMP/err") -eq 1 ]] && grep -q "backend" "$TMP/err" && ok \
   || bad "unknown back end gave exit $rc: $(cat "$TMP/err")"
+# What a back end cannot do is refused before anything is read (the
+# registry's refusals): waveforms need the SystemC pipeline, sampled timing
+# is approx's.
+"$GIRTD" render traces/equilateral_200.trace --backend golden --wave "$TMP/w.fst" --out "$TMP/refused" 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/refused" && "$(cat "$TMP/err")" == "--wave: waveforms record the SystemC pipeline: use --backend rtl (or approx)" ]] \
+  && ok || bad "--wave on golden: exit $rc, $(cat "$TMP/err")"
+"$GIRTD" render traces/equilateral_200.trace --backend rtl --sample-timing 0.1 --out "$TMP/refused" 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/refused" && "$(cat "$TMP/err")" == "--sample-timing: sampled timing is an estimator of the approx back end: use --backend approx" ]] \
+  && ok || bad "--sample-timing on rtl: exit $rc, $(cat "$TMP/err")"
 # Enumerated and ranged options are refused by the parser, one line, exit 2.
 for args in "--frames some" "--aa -1" "--level quad" "--wave-window 0:1us"; do
   "$GIRTD" render traces/equilateral_200.trace $args --out "$TMP/badopt" 2> "$TMP/err"; rc=$?

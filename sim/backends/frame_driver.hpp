@@ -1,0 +1,58 @@
+// What every run does around its frames, whichever back end draws them:
+// the render session for the untimed back ends and the SystemC back-end
+// stage for the timed ones both go through it. It makes and checks the
+// --dump tap before the run and commits it after; takes each frame's end
+// (its picture kept for --frames all); prints the progress line with its
+// ETA on a long run; and keeps the simulation's wall clock.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "backends/dump_tap.hpp"
+#include "backends/render_session.hpp"
+#include "config/params.hpp"
+#include "io/png_io.hpp"
+#include "io/trace.hpp"
+
+namespace girtd {
+
+class FrameDriver {
+ public:
+  // `input`: what entered the run (for models and scenes, the polygon-level
+  // trace), `frames` of them. Throws InputError for a --dump the input
+  // cannot give.
+  FrameDriver(std::string backend, const Trace& input, const Params& p, const RenderOptions& opt);
+
+  DumpTap* tap() { return tap_.get(); }
+  size_t frames() const { return frames_; }
+
+  void start();  // the simulation starts: set-up before it is not timed
+  double wall_s() const;
+
+  // A frame ended with its swap; `shown` is read only when frames are kept.
+  void frame_ended(const std::function<RgbImage()>& shown);
+  // How far the run is: `done` of `total` `unit` (polygons lit, triangles,
+  // frames) in frame `frame`; `detail` follows. Printed on a terminal once
+  // the run has taken a second, with the time left at this pace.
+  void progress(size_t frame, uint64_t done, uint64_t total, const char* unit, const std::string& detail = "");
+
+  // After the run: the kept frames into `out`, the tap committed, the
+  // progress line ended.
+  void finish(RenderOutput& out);
+
+ private:
+  std::string backend_;
+  size_t frames_;
+  bool keep_frames_, show_progress_;
+  std::unique_ptr<DumpTap> tap_;
+  std::vector<RgbImage> kept_;
+  std::chrono::steady_clock::time_point t0_;
+  bool printed_ = false;
+};
+
+}  // namespace girtd

@@ -1,0 +1,89 @@
+// The back-end registry (sim/engine/backend_registry.cpp) against the design
+// as docs/architecture.md's capability table states it, written out here by
+// hand; and the frame driver every run goes through
+// (sim/backends/frame_driver.hpp).
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <set>
+
+#include "backends/frame_driver.hpp"
+#include "engine/backend_registry.hpp"
+#include "frontend/input_test_support.hpp"
+
+namespace girtd {
+
+TEST_CASE("the registry: each back end's capabilities, refusals and factory", "[registry]") {
+  REQUIRE(backend_names() == std::vector<std::string>{"reference", "golden", "approx", "rtl"});
+  const BackendEntry &reference = backend_named("reference"), &golden = backend_named("golden"),
+                     &approx = backend_named("approx"), &rtl = backend_named("rtl");
+  CHECK(reference.capabilities == (kSeesSurfaces | kExactPicture));
+  CHECK(golden.capabilities == (kDrawsWithDda | kSeesSurfaces));
+  CHECK(approx.capabilities == (kDrawsWithDda | kModelsTime | kSeesSurfaces | kSamplesTiming));
+  CHECK(rtl.capabilities == (kDrawsWithDda | kModelsTime | kRunsRtl | kExactTiming));
+  for (const BackendEntry& b : backend_registry()) {
+    INFO(b.name);
+    CHECK(bool(b.make_untimed) != bool(b.make_timed));  // exactly one factory
+    CHECK(bool(b.make_timed) == b.timed());
+    CHECK(!b.summary.empty());
+    std::set<std::string> refused;
+    for (const BackendRefusal& r : b.refuses) {
+      CHECK(refused.insert(r.option).second);
+      CHECK(!r.reason.empty());
+    }
+    // What it refuses is what it lacks: waveforms without the pipeline,
+    // sampled timing without the sampler.
+    CHECK(bool(b.refusal("--wave")) == !b.has(kModelsTime));
+    CHECK(bool(b.refusal("--sample-timing")) == !b.has(kSamplesTiming));
+  }
+  CHECK(&backend_with(kExactPicture) == &reference);
+  CHECK(&backend_with(kExactTiming) == &rtl);
+  CHECK(find_backend("nosuch") == nullptr);
+  CHECK_THROWS_AS(backend_named("nosuch"), std::logic_error);
+  // An untimed factory makes a back end that says its own name.
+  CHECK(golden.make_untimed(Params::defaults())->name() == "golden");
+}
+
+TEST_CASE("the frame driver keeps each frame's picture only for --frames all and commits the dump at the end",
+          "[registry]") {
+  Trace t;
+  t.path = "two_frames.trace";
+  t.level = TraceLevel::kTriangle;
+  t.frames.resize(2);
+  const Params p = Params::defaults();
+  RgbImage img;
+  img.width = img.height = 1;
+  img.rgb = {1, 2, 3};
+  int reads = 0;
+  auto shown = [&] { return ++reads, img; };
+
+  RenderOptions plain;
+  FrameDriver a("golden", t, p, plain);
+  CHECK(a.tap() == nullptr);
+  a.frame_ended(shown);
+  a.frame_ended(shown);
+  RenderOutput out_a;
+  a.finish(out_a);
+  CHECK(reads == 0);  // not kept: the picture is never read
+  CHECK(out_a.per_frame.empty());
+
+  RenderOptions keep;
+  keep.keep_all_frames = true;
+  const std::string dump = test::temp_file("frame_driver.trace", "");
+  std::filesystem::remove(dump);
+  keep.dump = DumpRequest{TraceLevel::kTriangle, dump};
+  FrameDriver b("golden", t, p, keep);
+  REQUIRE(b.tap() != nullptr);
+  for (const TraceFrame& f : t.frames) {
+    b.tap()->frame(f);
+    b.frame_ended(shown);
+  }
+  CHECK(!std::filesystem::exists(dump));  // nothing half-written
+  RenderOutput out_b;
+  b.finish(out_b);
+  CHECK(reads == 2);
+  CHECK(out_b.per_frame.size() == 2);
+  CHECK(std::filesystem::exists(dump));
+}
+
+}  // namespace girtd
