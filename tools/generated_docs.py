@@ -10,7 +10,7 @@ A generated section sits between
 and is replaced by COMMAND's standard output. COMMAND is a program in
 BUILD/bin (girtd_report_keys) or a script under tools/ run with BUILD as its
 first argument. Usage: generated_docs.py BUILD_DIR [--check] [FILE...]
-(default: every README.md in the repository).
+(default: every README.md in the repository and the pages of docs/).
 """
 import pathlib
 import re
@@ -35,8 +35,9 @@ def main():
     check = "--check" in args
     args = [a for a in args if a != "--check"]
     build = pathlib.Path(args[0]).resolve()
-    files = [pathlib.Path(a).resolve() for a in args[1:]] or sorted(p for p in ROOT.rglob("README.md")
-                                                         if not any(part.startswith("build") for part in p.relative_to(ROOT).parts))
+    docs = list(ROOT.rglob("README.md")) + list((ROOT / "docs").glob("*.md"))
+    files = [pathlib.Path(a).resolve() for a in args[1:]] or sorted(
+        p for p in docs if not any(part.startswith("build") or part == "node_modules" for part in p.relative_to(ROOT).parts))
     stale = []
     for path in files:
         text = path.read_text()
