@@ -45,7 +45,7 @@ def timing():
            "| level | what it is | mean wall s | speed-up over rtl | mean \\|time error\\| | max \\|time error\\| | under 1 % | on the front |",
            "|---|---|---|---|---|---|---|---|"]
     what = {"rtl": "the Verilated back end in the SystemC pipeline (exact by definition)",
-            "approx": "golden DDA and HAD, the event model for time",
+            "approx": "golden DDA and HAD, the timing model for time",
             "dda_bound": "golden's DDA clocks x period (no front end, no memory side)"}
     levels = doc["levels"]
     rtl_wall = next((l["wall_s_mean"] for l in levels if l["level"] == "rtl"), None)

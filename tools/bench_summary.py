@@ -6,7 +6,7 @@ Reads testbench/measured/bench.json (copied from out/bench/bench.json by
 `tools/girtd docs --record out/bench`) and prints one generated section:
   pipeline  approx against rtl on every sample input (sim/README.md)
   coupling  what the SystemC coupling and waveforms cost (sim/README.md)
-  timing    the event model against the Verilated back end (models/timing/README.md)
+  timing    the timing model against the Verilated back end (models/timing/README.md)
   demo      the demo scene's report on approx (sim/README.md); rendered now, not
             recorded: modeled figures are deterministic
   numerics  wrapped EP values in use on a few inputs, on golden (models/dda/README.md);
@@ -74,7 +74,7 @@ def timing(b):
     rows = [r for r in b["timing"] if r["pixels"] >= LARGE]
     ratio = [r["rtl_wall_s"] / r["model_wall_s"] for r in rows]
     demo = next(r for r in b["timing"] if r["trace"] == "traces/demo.trace")
-    return (source(b) + f" On the {len(rows)} triangle traces of {LARGE:,} pixels or more the event model with "
+    return (source(b) + f" On the {len(rows)} triangle traces of {LARGE:,} pixels or more the timing model with "
             f"the golden DDA and HAD is {span(ratio, '{:.0f}x')} faster than the Verilated back end (demo.trace: "
             f"{demo['model_wall_s']:.2f} s against {demo['rtl_wall_s']:.2f} s of wall time; the RTL runs "
             f"{demo['rtl_dda_clocks_per_wall_s']:.1e} DDA clocks per wall second there).\n")

@@ -29,11 +29,12 @@ struct PageGeometry {
   uint32_t vram_address(int x, int y) const { return (number_of(x, y) << index_bits) | index_of(x, y); }
 };
 
-// The HAD's cache: `pages` slots, direct-mapped (page P in slot P mod pages).
+// The HAD's cache: `pages` slots, direct-mapped (page P in slot P mod pages:
+// its low bits, `pages` being a power of two as the config requires).
 struct CacheGeometry {
   int pages = 1;
   int slot_bits = 1;  // a slot number (at least one bit, for the RTL's ports)
-  int slot_of(uint32_t page_number) const { return static_cast<int>(page_number % uint32_t(pages)); }
+  int slot_of(uint32_t page_number) const { return static_cast<int>(page_number & uint32_t(pages - 1)); }
 };
 
 PageGeometry page_geometry(const Params& p);

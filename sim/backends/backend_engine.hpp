@@ -1,6 +1,6 @@
 // What the pipeline's back-end stage drives: the DDA, FIFO, HAD, cache and
 // VRAM, in base ticks. Two engines: `approx` (golden DDA and HAD for what
-// is drawn, models/timing's event model for when) and `rtl` (the Verilated
+// is drawn, models/timing's timing model for when) and `rtl` (the Verilated
 // girtd_backend, clocked tick by tick). The SystemC stage around them
 // (backend_stage.hpp) hands over parameter sets as they arrive.
 #pragma once

@@ -7,7 +7,7 @@
 // leaves it), not from timing, so the map is the same for golden's order,
 // approx's and rtl's (one DDA, regressed bit for bit). rtl feeds the pixels
 // its DDA pushes (rtl/rtl_screen_maps.hpp); approx feeds drawn() and takes
-// the misses from its event model (page_missed()). The [timing] tests check
+// the misses from its timing model (page_missed()). The [timing] tests check
 // that the two give the same maps.
 #pragma once
 

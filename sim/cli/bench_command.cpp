@@ -129,9 +129,9 @@ int run_bench(const BenchArgs& a) {
     }
   }
   // The back end's two timing engines on the same traces: the Verilated RTL
-  // and the event model behind the approx back end.
+  // and the timing model behind the approx back end.
   std::string md2 =
-      "\n## Back-end timing: RTL against the event model\n\n"
+      "\n## Back-end timing: RTL against the timing model\n\n"
       "| trace | pixels | RTL modeled ms | model modeled ms | difference | RTL wall s | model wall s | speed-up | "
       "RTL DDA clocks per wall s |\n|---|---|---|---|---|---|---|---|---|\n";
   nlohmann::json timing_rows = nlohmann::json::array();

@@ -29,7 +29,7 @@ bool same_counts(const nlohmann::json& a, const nlohmann::json& b) {
   for (const char* k : {"triangles_in", "triangles_drawn", "pixels_generated", "pixels_written", "pixels_blended",
                         "pixels_z_rejected", "pixels_dropped", "dda_cycles", "dda_states", "image_sha256"})
     if (a.value(k, nlohmann::json()) != b.value(k, nlohmann::json())) return false;
-  // The HAD's busy ticks and the cache's page misses, which the event model
+  // The HAD's busy ticks and the cache's page misses, which the timing model
   // gets exactly.
   return a.at("stages").at("had").at("busy_s") == b.at("stages").at("had").at("busy_s") &&
          a.at("cache") == b.at("cache");
@@ -105,7 +105,7 @@ PipelineBench run_pipeline_bench(const Params& params, const ConfigFiles& config
     const bool counts = same_counts(a, r) && g.at("pixels_generated") == r.at("pixels_generated");
     const double rt = r.at("modeled_time_s"), at = a.at("modeled_time_s");
     const double diff = rt > 0 ? (at - rt) / rt : 0.0;
-    // The event model is the RTL's timing: equal to the base tick.
+    // The timing model is the RTL's timing: equal to the base tick.
     const double tick_s = params.base_tick_ns * 1e-9;
     const long long diff_ticks = std::llround(at / tick_s) - std::llround(rt / tick_s);
     const bool time_ok = diff_ticks == 0;

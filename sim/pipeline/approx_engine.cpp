@@ -1,5 +1,5 @@
-// The approx back end: the golden DDA and HAD decide every pixel; the event
-// model of models/timing decides when (its error against the RTL is measured
+// The approx back end: the golden DDA and HAD decide every pixel; the
+// timing model of models/timing decides when (its error against the RTL is measured
 // by `girtd bench`, not assumed).
 #include "pipeline/approx_engine.hpp"
 
@@ -55,7 +55,7 @@ class ApproxEngine : public BackendEngine {
         break;
     }
   }
-  // The HAD and the event model as the DDA's sink: pixel by pixel, or a
+  // The HAD and the timing model as the DDA's sink: pixel by pixel, or a
   // span's pixels as one run (one clock each from its first; the heat map
   // takes the run's ends).
   struct Sink {

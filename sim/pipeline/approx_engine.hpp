@@ -1,4 +1,4 @@
-// approx: the golden DDA and HAD for what is drawn, models/timing's event
+// approx: the golden DDA and HAD for what is drawn, models/timing's timing
 // model for when (backends/backend_engine.hpp).
 #pragma once
 

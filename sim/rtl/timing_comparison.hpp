@@ -1,5 +1,5 @@
 // One trace through the two back-end timing engines — the Verilated RTL
-// (hw/backend) and the event model (models/timing) fed by the golden DDA and
+// (hw/backend) and the timing model (models/timing) fed by the golden DDA and
 // HAD — with their results and wall times side by side.
 #pragma once
 
@@ -19,7 +19,7 @@ struct TimingComparison {
   FifoSeries model_fifo, rtl_fifo;  // the DDA -> HAD FIFO's largest count per bin
   ScreenMaps model_maps;             // report.html's heat maps: from the golden DDA's pixels,
   std::optional<ScreenMaps> rtl_maps;  // and from the RTL's own pushes and counters
-  double model_wall_s = 0;  // golden DDA + HAD + event model (and its series)
+  double model_wall_s = 0;  // golden DDA + HAD + timing model (and its series)
   double rtl_wall_s = 0;    // the Verilated back end (and its heat maps)
 };
 

@@ -48,7 +48,7 @@ for cfg in "$@"; do
     || bad "$name: counts differ: rtl $(jq -c "$counts" "$r") approx $(jq -c "$counts" "$a")"
   [[ "$(jq .modeled_time_s "$a")" == "$(jq .modeled_time_s "$r")" ]] \
     && ok || bad "$name: approx's modeled time $(jq .modeled_time_s "$a") s, rtl's $(jq .modeled_time_s "$r") s"
-  # report.html's heat maps: approx's (the event model's misses, the golden DDA's pixels) and rtl's
+  # report.html's heat maps: approx's (the timing model's misses, the golden DDA's pixels) and rtl's
   # (the pixels the RTL pushes; with dda.output_latency_clocks >= 2 some are pushed after the next load).
   [[ "$(heat_maps "$TMP/$name/approx/report.html")" == "$(heat_maps "$TMP/$name/rtl/report.html")" ]] \
     && ok || bad "$name: approx's and rtl's heat maps differ"

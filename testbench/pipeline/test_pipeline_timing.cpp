@@ -125,7 +125,7 @@ TEST_CASE("rtl in the pipeline takes exactly the bare Verilated back end's ticks
   CHECK(out.shown.rgb == bare_rgb);
 }
 
-TEST_CASE("approx in the pipeline takes exactly the event model's ticks", "[pipeline]") {
+TEST_CASE("approx in the pipeline takes exactly the bare timing model's ticks", "[pipeline]") {
   const Params p = Params::defaults();
   const Trace dda = prepared(small_triangles(300, 6), p);
   BackendTimingModel model(p);

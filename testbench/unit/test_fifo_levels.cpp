@@ -52,45 +52,30 @@ TEST_CASE("FIFO levels: a peak early in a bin does not spill into the bins after
   CHECK(s.bins()[99][0] == 0);
 }
 
-TEST_CASE("FIFO levels: the pushes leaving a bin, following a model's recent pops, give the series of stays", "[report]") {
+TEST_CASE("FIFO levels: stays told in batches give the series of stays told one by one", "[report]") {
   // A FIFO of 16 over 200,000 pixels: random pushes (one per DDA clock of 7
-  // ticks at most) and pops (FIFO order, never before the push, never more
-  // than 16 inside); the count just after each push counted here by hand,
-  // and told as the event model's watch tells it (BackendTimingModel::watch_fifo).
+  // ticks at most, now and then a long gap) and pops (FIFO order, never
+  // before the push, never more than 16 inside), in batches of random size.
   std::mt19937_64 rng(11);
-  FifoLevels stays(5e-9), counted(5e-9);
-  std::vector<uint64_t> pops;  // of the pixels pushed so far
-  TickWindow recent;           // the last 18 of them, as the event model keeps (depth + 2)
-  counted.follow(recent);
+  FifoLevels one(5e-9), batched(5e-9);
+  std::vector<MemorySideTicks::FifoStay> all, batch;
   uint64_t push = 0, last_pop = 0;
-  uint64_t watch_at = 0, peak = 0, told = 0;  // the watch: from which push on, the peak until then
-  FifoPush before{0, 0};
   for (int i = 0; i < 200000; ++i) {
-    push += 7 * (1 + rng() % (rng() % 50 == 0 ? 400 : 3));  // now and then a long gap
-    if (pops.size() >= 16) push = std::max(push, pops[pops.size() - 16]);  // full: wait for a pop
+    push += 7 * (1 + rng() % (rng() % 50 == 0 ? 400 : 3));
+    if (all.size() >= 16) push = std::max(push, all[all.size() - 16].pop);  // full: wait for a pop
     const uint64_t pop = std::max(push + 1, last_pop + 1 + rng() % 2) + rng() % 30;
     last_pop = pop;
-    pops.push_back(pop);
-    // In on push + 1: pushed before push + 1 (all of them), not popped before it.
-    const uint64_t inside = uint64_t(std::count_if(pops.end() - std::min<ptrdiff_t>(pops.size(), 40), pops.end(),
-                                                   [&](uint64_t q) { return q >= push + 1; }));
-    stays.interval(push, pop);
-    recent.push_back(pop);
-    if (recent.size() > 18) recent.pop_front();
-    const FifoPush now{push, inside};
-    if (push >= watch_at) {
-      watch_at = counted.push_leaving_bin(before, peak, now);
-      peak = 0;
-      ++told;
+    all.push_back({push, pop});
+    one.interval(push, pop);
+    batch.push_back({push, pop});
+    if (rng() % 100 == 0) {
+      batched.intervals(batch);
+      batch.clear();
     }
-    peak = std::max(peak, inside);
-    before = now;
   }
-  CHECK(told < 20000);  // most pushes stay inside a bin
-  const uint64_t end = last_pop + 1000;
-  const FifoSeries a = stays.series(end), b = counted.series(end, before, peak);
-  REQUIRE(a.bin_s() == b.bin_s());
-  CHECK(a.bins() == b.bins());
+  batched.intervals(batch);
+  const uint64_t end = last_pop + 100;
+  CHECK(batched.series(end).bins() == one.series(end).bins());
 }
 
 }  // namespace girtd
