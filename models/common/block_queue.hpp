@@ -27,9 +27,18 @@ class BlockQueue {
   }
   bool empty() const { return head_ == items_.size(); }
   size_t size() const { return items_.size() - head_; }
-  const T& front() const { return items_[head_]; }
-  const T& back() const { return items_.back(); }
-  const T& operator[](size_t i) const { return items_[head_ + i]; }
+  const T& front() const {
+    assert(!empty());
+    return items_[head_];
+  }
+  const T& back() const {
+    assert(!empty());
+    return items_.back();
+  }
+  const T& operator[](size_t i) const {
+    assert(i < size());
+    return items_[head_ + i];
+  }
 
  private:
   static constexpr size_t kCompactAfter = 1024;

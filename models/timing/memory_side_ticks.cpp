@@ -26,7 +26,7 @@ void MemorySideTicks::push(uint32_t page, HadOutcome outcome, uint64_t tick) {
   fifo_.push_back({tick, page, outcome});
 }
 
-uint64_t MemorySideTicks::count_before(uint64_t tick) const {
+uint64_t MemorySideTicks::count_on(uint64_t tick) const {
   size_t n = fifo_count();  // tick >= now_
   while (n < fifo_.size() && fifo_[n].tick < tick) ++n;
   return n;
@@ -53,11 +53,20 @@ bool MemorySideTicks::vram_busy() const {
 }
 
 bool MemorySideTicks::idle() const {
-  return now_ >= held_until_ && state_ == State::kIdle && !flush_pending_ && !wb_pending_ && !pf_loading_ && fifo_.empty() && !vram_busy();
+  return now_ >= held_until_ && state_ == State::kIdle && !flush_pending_ && !wb_pending_ && !pf_loading_ &&
+         fifo_.empty() && !vram_busy();
 }
 
-void MemorySideTicks::clear() { clear_in_ = true; }
-void MemorySideTicks::flush() { flush_in_ = true; }
+// Requested on now(): the driver asks once the back end is idle (a pixel
+// still held would let the request take effect late).
+void MemorySideTicks::clear() {
+  if (!idle()) throw std::logic_error("MemorySideTicks: a frame clear requested while the back end is busy");
+  clear_in_ = true;
+}
+void MemorySideTicks::flush() {
+  if (!idle()) throw std::logic_error("MemorySideTicks: a flush requested while the back end is busy");
+  flush_in_ = true;
+}
 
 MemorySideTicks::Signals MemorySideTicks::signals() const {
   // ---- this tick's signals, from the registers (hw/vram, hw/had) ----
@@ -200,7 +209,7 @@ uint64_t MemorySideTicks::counting_ticks(const Signals& g, uint64_t tick) const 
   const uint64_t wait_from = std::max(now_, held_pop_ + 1), wait_to = std::min(to, held_vram_to_);
   if (wait_to > wait_from) vram_wait_ticks_ += wait_to - wait_from;
   // No pop meanwhile: the FIFO's count is largest on the last tick (and at most what is pending).
-  if (fifo_.size() > fifo_max_) fifo_max_ = std::max(fifo_max_, count_before(to - 1));
+  if (fifo_.size() > fifo_max_) fifo_max_ = std::max(fifo_max_, count_on(to - 1));
   if (steal_period_) steal_count_ += to - now_;
   now_ = to;
 }

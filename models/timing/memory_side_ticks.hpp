@@ -29,7 +29,8 @@ class MemorySideTicks {
   void run_until(uint64_t tick) {
     if (now_ < tick) run(tick);
   }
-  // The HAD busy with a pixel until this tick at least (no pop before it).
+  // While a pixel is taken whole: the tick the HAD is IDLE again; it pops
+  // nothing before. Stale (at or before now()) once that tick is reached.
   uint64_t held_until() const { return held_until_; }
   // The DDA pushes a pixel of `page` on tick `tick` (at or after now() and
   // after the last push; the memory side need not have reached it): it is
@@ -83,7 +84,7 @@ class MemorySideTicks {
   Signals signals() const;
   void edge(const Signals& g);  // the clock edge: state n -> n + 1
   // Ticks from now() (up to `tick`) on which nothing but counters moves:
-  // run_until takes them at once.
+  // run() takes them at once.
   uint64_t counting_ticks(const Signals& g, uint64_t tick) const;
   bool vram_busy() const;
   bool quiet() const;
@@ -91,9 +92,8 @@ class MemorySideTicks {
   bool take_pixel(uint64_t in_fifo);  // the FIFO's count now
   void advance_held(uint64_t tick);
   size_t slot_of(uint32_t page) const { return size_t(layout_.cache.slot_of(page)); }
-  void start_vram();  // an operation of cycle_ length
   void popped(const Entry& e);  // the FIFO's head leaves it now
-  uint64_t count_before(uint64_t tick) const;  // the FIFO's count on `tick`, at or after now_, with no pop between
+  uint64_t count_on(uint64_t tick) const;  // the FIFO's count on `tick` (at or after now_, no pop between)
 
   const RtlLayout layout_;
   const uint64_t access_, blend_, cycle_, clear_ticks_, steal_period_;

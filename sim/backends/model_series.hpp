@@ -33,7 +33,7 @@ class ModelSeries {
   }
   void end_triangle(uint64_t dda_cycles, uint64_t emitted) { maps_.end_triangle(dda_cycles, emitted); }
 
-  // Once the model has told every stay up to `end` (it does at each triangle's end).
+  // Complete once the model has drained (a pixel's stay is told once it has left the FIFO).
   FifoSeries fifo(uint64_t end) const { return fifo_.series(end); }
   const ScreenMaps& maps() const { return maps_.maps(); }
 

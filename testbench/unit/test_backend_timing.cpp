@@ -53,8 +53,9 @@ void check_trace(const std::string& path, const Params& p = Params::defaults()) 
 }
 
 // The memory-side options, alone and together (run-time inputs of the
-// built RTL). Prefetch and stolen cycles step the memory side tick by tick
-// (models/timing/memory_side_ticks); a steal every 1 us (200 ticks) lands in
+// built RTL). With prefetch, stolen cycles or a write-behind write under
+// way the memory side is stepped tick by tick (models/timing/
+// memory_side_ticks), else mostly pixel by pixel; a steal every 1 us (200 ticks) lands in
 // every state of the HAD, the frame clear and the flush.
 nlohmann::json options(const char* text) { return nlohmann::json::parse(text); }
 const std::vector<const char*> kEveryOption = {
