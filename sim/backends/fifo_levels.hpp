@@ -11,11 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <vector>
 
 #include "common/block_queue.hpp"
 #include "timeline/time_series.hpp"
-#include "timing/memory_side_ticks.hpp"
 
 namespace girtd {
 
@@ -44,19 +42,6 @@ class FifoLevels {
     retire_pops_up_to(push);
     level(push + 1, count_ + 1);
     pops_.push_back(pop);
-  }
-  // The same for a batch of stays, in push order: the batch's own pops are
-  // merged with its pushes where they lie (only those still pending at its
-  // end are queued).
-  void intervals(const std::vector<MemorySideTicks::FifoStay>& stays) {
-    size_t popped = 0;
-    for (size_t i = 0; i < stays.size(); ++i) {
-      const uint64_t push = stays[i].push;
-      retire_pops_up_to(push);  // earlier batches' pops come first (FIFO order)
-      for (; popped < i && stays[popped].pop <= push; ++popped) level(stays[popped].pop + 1, count_ - 1);
-      level(push + 1, count_ + 1);
-    }
-    for (; popped < stays.size(); ++popped) pops_.push_back(stays[popped].pop);
   }
   // The series up to tick `end` (the level then held carried to it).
   FifoSeries series(uint64_t end) const {

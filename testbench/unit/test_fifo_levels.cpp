@@ -1,8 +1,6 @@
 // report.html's FIFO occupancy series from pixel stays, worked by hand.
 #include <catch2/catch.hpp>
 
-#include <algorithm>
-#include <random>
 #include <vector>
 
 #include "backends/fifo_levels.hpp"
@@ -50,32 +48,6 @@ TEST_CASE("FIFO levels: a peak early in a bin does not spill into the bins after
   for (size_t b = 0; b < 10; ++b) peaks.push_back(s.bins()[b][0]);
   CHECK(peaks == std::vector<double>{3, 7, 11, 15, 16, 12, 8, 4, 0, 0});
   CHECK(s.bins()[99][0] == 0);
-}
-
-TEST_CASE("FIFO levels: stays told in batches give the series of stays told one by one", "[report]") {
-  // A FIFO of 16 over 200,000 pixels: random pushes (one per DDA clock of 7
-  // ticks at most, now and then a long gap) and pops (FIFO order, never
-  // before the push, never more than 16 inside), in batches of random size.
-  std::mt19937_64 rng(11);
-  FifoLevels one(5e-9), batched(5e-9);
-  std::vector<MemorySideTicks::FifoStay> all, batch;
-  uint64_t push = 0, last_pop = 0;
-  for (int i = 0; i < 200000; ++i) {
-    push += 7 * (1 + rng() % (rng() % 50 == 0 ? 400 : 3));
-    if (all.size() >= 16) push = std::max(push, all[all.size() - 16].pop);  // full: wait for a pop
-    const uint64_t pop = std::max(push + 1, last_pop + 1 + rng() % 2) + rng() % 30;
-    last_pop = pop;
-    all.push_back({push, pop});
-    one.interval(push, pop);
-    batch.push_back({push, pop});
-    if (rng() % 100 == 0) {
-      batched.intervals(batch);
-      batch.clear();
-    }
-  }
-  batched.intervals(batch);
-  const uint64_t end = last_pop + 100;
-  CHECK(batched.series(end).bins() == one.series(end).bins());
 }
 
 }  // namespace girtd
