@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "backends/backend.hpp"
-#include "backends/backend_engine.hpp"
 #include "config/params.hpp"
 
 namespace girtd {
@@ -32,8 +31,8 @@ struct BackendRefusal {
   std::string reason;  // the rest of the one-line error
 };
 
-// How a timed back end's engine is made for one run.
-struct EngineRequest {
+// How a back end is made for one run.
+struct BackendRequest {
   bool traced = false;                // the RTL built with FST tracing (--wave)
   std::optional<double> sample_rate;  // --sample-timing
 };
@@ -43,10 +42,10 @@ struct BackendEntry {
   std::string summary;  // one line for --help and the docs
   unsigned capabilities = 0;
   std::vector<BackendRefusal> refuses;
-  // Exactly one factory: untimed back ends draw frame by frame in the render
-  // session; timed ones are the SystemC pipeline's back-end stage.
-  std::function<std::unique_ptr<Backend>(const Params&)> make_untimed;
-  std::function<std::unique_ptr<BackendEngine>(const Params&, const EngineRequest&)> make_timed;
+  // Untimed back ends are driven frame by frame by the render session
+  // (backends/render_session.hpp); timed ones are the SystemC pipeline's
+  // back-end stage (pipeline/pipeline.hpp).
+  std::function<std::unique_ptr<Backend>(const Params&, const BackendRequest&)> make;
 
   bool has(Capability c) const { return (capabilities & c) != 0; }
   bool timed() const { return has(kModelsTime); }

@@ -20,62 +20,49 @@ void accumulate(DdaRunStats& total, const DdaRunStats& one) {
 
 void GoldenBackend::begin(const Trace& trace) {
   thesis_mode_ = trace.level == TraceLevel::kThesis;
-  if (trace.level == TraceLevel::kThesis) return;  // PIX_INTERNO fixes Q = 1
-  require_hardware_q(trace);
+  counts_.dda = DdaRunStats{};  // no triangle reaching the DDA: it ran 0 clocks, as rtl's counters say
+  if (!thesis_mode_) return require_hardware_q(trace);
+  // PIX_INTERNO fixes Q = 1; the program draws a picture in the frame's top-left corner.
+  had_.set_screen(thesis_screen_.width, thesis_screen_.height);
 }
 
-namespace {
-
-DdaRunStats run_sequencer(const DdaPix& seq, const DdaParams& p, const HadSink& sink) { return seq.run(p, sink); }
-DdaRunStats run_sequencer(const DdaEngine& seq, const DdaParams& p, const HadSink& sink) {
-  return seq.run_inline(p, sink);
+// One triangle through a sequencer (the hardware DDA, or DDApix for the
+// thesis program) into the HAD.
+void GoldenBackend::traverse(const DdaParams& p) {
+  const HadSink sink{had_, counts_.pixels_generated, p.layer};
+  const DdaRunStats one = thesis_mode_ ? ddapix_.run(p, sink) : engine_.run_inline(p, sink);
+  accumulate(*counts_.dda, one);
+  ++counts_.triangles_drawn;
 }
 
-// One triangle through a sequencer (the hardware DDA or DDApix) into the HAD.
-template <typename Sequencer>
-void traverse(const Sequencer& seq, const DdaParams& p, Had& had, RunStats& stats) {
-  const DdaRunStats one = run_sequencer(seq, p, HadSink{had, stats.pixels_generated, p.layer});
-  if (!stats.dda) stats.dda = DdaRunStats{};
-  accumulate(*stats.dda, one);
-  ++stats.triangles_drawn;
-}
-
-}  // namespace
-
-void GoldenBackend::run_dda(const DdaParams& p, Had& had, RunStats& stats) {
-  if (tap_) tap_(p);
-  traverse(engine_, p, had, stats);
-}
-
-// The thesis appendix's program: prepdda and DDApix in its own formats.
-void GoldenBackend::run_thesis(const Triangle& t, Had& had, RunStats& stats) {
-  ++stats.triangles_in;
-  const auto p = thesis_prepare(t.v, thesis_params_);
-  if (p) traverse(ddapix_, *p, had, stats);
-}
-
-void GoldenBackend::draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) {
-  if (thesis_mode_) {
-    for (const Triangle& t : frame.triangles) run_thesis(t, had, stats);
+void GoldenBackend::draw(const Triangle& t) {
+  ++counts_.triangles_in;
+  if (thesis_mode_) {  // the thesis appendix's program: prepdda and DDApix in its own formats
+    if (const auto p = thesis_prepare(t.v, thesis_params_)) traverse(*p);
     return;
   }
   DdaParams p;
-  for (const Triangle& t : frame.triangles) {
-    ++stats.triangles_in;
-    if (preparer_.prepare(t, frame.settings, p) == PrepareResult::kReady) run_dda(p, had, stats);
-  }
-  for (const DdaParams& d : frame.dda) {
-    ++stats.triangles_in;
-    run_dda(d, had, stats);
-  }
+  if (preparer_.prepare(t, settings_, p) != PrepareResult::kReady) return;
+  if (tap_) tap_(p);
+  traverse(p);
+}
+
+void GoldenBackend::draw(const DdaParams& d) {
+  ++counts_.triangles_in;
+  if (tap_) tap_(d);
+  traverse(d);
 }
 
 void GoldenBackend::finish(RunStats& stats) const {
-  if (!stats.dda) stats.dda = DdaRunStats{};  // no triangle reached the DDA: it ran 0 clocks, as rtl's counters say
+  stats.triangles_in = counts_.triangles_in;
+  stats.triangles_drawn = counts_.triangles_drawn;
+  stats.pixels_generated = counts_.pixels_generated;
+  stats.dda = counts_.dda;
+  stats.had = had_.counts();
   stats.preparer = preparer_.counts();
   stats.stages.push_back(untimed_stage("preparer", preparer_.counts().prepared));
-  stats.stages.push_back(untimed_stage("dda", stats.triangles_drawn));
-  stats.stages.push_back(untimed_stage("had", stats.pixels_generated));
+  stats.stages.push_back(untimed_stage("dda", counts_.triangles_drawn));
+  stats.stages.push_back(untimed_stage("had", counts_.pixels_generated));
 }
 
 }  // namespace girtd

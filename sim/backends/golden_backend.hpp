@@ -2,22 +2,19 @@
 // Functional: it counts DDA clocks but models no time.
 #pragma once
 
-#include "backends/backend.hpp"
+#include "backends/had_backend.hpp"
 #include "dda/dda_engine.hpp"
 #include "dda/dda_preparer.hpp"
 #include "thesis/ddapix.hpp"
 
 namespace girtd {
 
-class GoldenBackend : public Backend {
+class GoldenBackend : public HadBackend {
  public:
   explicit GoldenBackend(const Params& p)
-      : preparer_(p), engine_(p), thesis_params_(p.with_thesis_formats()),
+      : HadBackend(p), thesis_screen_(p.thesis), preparer_(p), engine_(p), thesis_params_(p.with_thesis_formats()),
         ddapix_(thesis_params_, ThesisInside::kProgram) {}
-  std::string name() const override { return "golden"; }
   void begin(const Trace& trace) override;
-  void draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) override;
-  void finish(RunStats& stats) const override;
   void prune(const PrunePlan& plan) override {
     engine_.skip_unreachable_wraps(plan.unreachable_wraps);
     engine_.compute_spans(plan.dda_spans);
@@ -26,16 +23,25 @@ class GoldenBackend : public Backend {
     tap_ = std::move(tap);
     return true;
   }
+  void begin_frame(const FrameSettings& s) override {
+    HadBackend::begin_frame(s);
+    settings_ = s;
+  }
+  void draw(const Triangle& t) override;
+  void draw(const DdaParams& d) override;
+  void finish(RunStats& stats) const override;
 
  private:
-  void run_dda(const DdaParams& p, Had& had, RunStats& stats);
-  void run_thesis(const Triangle& t, Had& had, RunStats& stats);
+  void traverse(const DdaParams& p);
+  ThesisParams thesis_screen_;  // the appendix program draws in its own corner of the screen
   DdaPreparer preparer_;
   DdaEngine engine_;
   Params thesis_params_;  // the appendix program's register formats
   bool thesis_mode_ = false;
   DdaPix ddapix_;
+  FrameSettings settings_;  // the frame being drawn (the preparer's)
   std::function<void(const DdaParams&)> tap_;  // --dump dda
+  RunStats counts_;  // triangles, pixels, the DDA's statistics
 };
 
 // Adds one triangle's DDA statistics into a running total.

@@ -1,5 +1,7 @@
 #include "backends/reference_backend.hpp"
 
+#include <stdexcept>
+
 #include "common/input_error.hpp"
 #include "reference/reference_rasterizer.hpp"
 
@@ -11,20 +13,26 @@ void ReferenceBackend::begin(const Trace& trace) {
                      "the reference back end needs triangle-level input (a DDA trace holds no float triangles)");
 }
 
-void ReferenceBackend::draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) {
-  for (const Triangle& t : frame.triangles) {
-    ++stats.triangles_in;
-    const bool drawn = rasterize_reference(t, frame.settings, rules_, [&](const ReferenceSample& s) {
-      ++stats.pixels_generated;
-      had.update(quantize_reference(s), s.layer, s.covered);
-    });
-    stats.triangles_drawn += drawn;
-  }
+void ReferenceBackend::draw(const Triangle& t) {
+  ++triangles_in_;
+  const bool drawn = rasterize_reference(t, settings_, rules_, [&](const ReferenceSample& s) {
+    ++pixels_;
+    had_.update(quantize_reference(s), s.layer, s.covered);
+  });
+  triangles_drawn_ += drawn;
+}
+
+void ReferenceBackend::draw(const DdaParams&) {
+  throw std::logic_error("the reference back end draws triangles, not DDA parameter sets");
 }
 
 void ReferenceBackend::finish(RunStats& stats) const {
-  stats.stages.push_back(untimed_stage("reference_raster", stats.triangles_drawn));
-  stats.stages.push_back(untimed_stage("had", stats.pixels_generated));
+  stats.triangles_in = triangles_in_;
+  stats.triangles_drawn = triangles_drawn_;
+  stats.pixels_generated = pixels_;
+  stats.had = had_.counts();
+  stats.stages.push_back(untimed_stage("reference_raster", triangles_drawn_));
+  stats.stages.push_back(untimed_stage("had", pixels_));
 }
 
 }  // namespace girtd

@@ -1,21 +1,27 @@
 // --backend reference: the floating-point rasterizer through the golden HAD.
 #pragma once
 
-#include "backends/backend.hpp"
+#include "backends/had_backend.hpp"
 #include "reference/reference_rasterizer.hpp"
 
 namespace girtd {
 
-class ReferenceBackend : public Backend {
+class ReferenceBackend : public HadBackend {
  public:
-  explicit ReferenceBackend(const EdgeRules& rules) : rules_(rules) {}
-  std::string name() const override { return "reference"; }
+  explicit ReferenceBackend(const Params& p) : HadBackend(p), rules_{p.fill_top_left, p.edge_flags} {}
   void begin(const Trace& trace) override;
-  void draw_frame(const TraceFrame& frame, Had& had, RunStats& stats) override;
+  void begin_frame(const FrameSettings& s) override {
+    HadBackend::begin_frame(s);
+    settings_ = s;
+  }
+  void draw(const Triangle& t) override;
+  void draw(const DdaParams& d) override;  // refused by begin(): a DDA trace holds no float triangles
   void finish(RunStats& stats) const override;
 
  private:
   EdgeRules rules_;
+  FrameSettings settings_;
+  uint64_t triangles_in_ = 0, triangles_drawn_ = 0, pixels_ = 0;
 };
 
 }  // namespace girtd

@@ -1,5 +1,7 @@
-// Runs a trace through one back end, frame by frame (clear, draw, swap),
-// optionally recording the stream at a stage boundary (--dump).
+// Runs a trace through one untimed back end, frame by frame (clear, draw,
+// swap), optionally recording the stream at a stage boundary (--dump). The
+// timed back ends run in the SystemC pipeline (pipeline/pipeline.hpp); both
+// go through the same frame driver (backends/frame_driver.hpp).
 #pragma once
 
 #include <optional>
@@ -7,11 +9,11 @@
 #include <vector>
 
 #include "backends/backend.hpp"
+#include "backends/backend_entry.hpp"
 #include "backends/dump_tap.hpp"
 #include "backends/prune_plan.hpp"
 #include "common/input_error.hpp"
 #include "timeline/wave_options.hpp"
-#include "had/frame_buffer.hpp"
 #include "io/png_io.hpp"
 #include "io/trace.hpp"
 
@@ -40,8 +42,11 @@ struct RenderOptions {
   std::optional<double> sample_timing;  // approx: time this fraction of the triangles (backends/sampled_timing.hpp)
 };
 
-RenderOutput render_trace(const Trace& trace, Backend& backend, const Params& params, const RenderOptions& opt);
+// `backend`: an untimed entry (engine/backend_registry.hpp).
+RenderOutput render_trace(const BackendEntry& backend, const Trace& trace, const Params& params,
+                          const RenderOptions& opt);
 
-RgbImage shown_image(const FrameBuffer& fb);
+// What a run asks of the back end it makes.
+BackendRequest backend_request(const RenderOptions& opt);
 
 }  // namespace girtd

@@ -106,8 +106,7 @@ int run_bench(const BenchArgs& a) {
     for (const BackendEntry* e : untimed) {
       const BackendEntry& entry = *e;
       const std::string& name = entry.name;
-      auto backend = entry.make_untimed(params);
-      const RenderOutput out = render_trace(trace, *backend, params, {});
+      const RenderOutput out = render_trace(entry, trace, params, {});
       if (entry.has(kExactPicture)) reference = out;
       // The accuracy command's picture error (accuracy/accuracy_table.hpp).
       const ImageError err = compare_images(out.shown, reference.shown);

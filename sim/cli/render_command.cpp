@@ -126,8 +126,6 @@ int run_render(const RenderArgs& a) {
   if (!a.wave.empty() || !a.wave_window.empty() || !a.wave_scopes.empty())
     wave = parse_wave_options(a.wave, a.wave_window, a.wave_scopes, params.dda_clock_ns, params.base_tick_ns);
   const bool pipelined = entry.timed();
-  std::unique_ptr<Backend> backend;
-  if (!pipelined) backend = entry.make_untimed(params);
   if (params.q_override && !is_hardware_q(*params.q_override) && entry.has_dda())
     throw InputError(a.aa ? "--aa" : "dda.q_override", 0,
                      "Q must be 0 or a power of two 1/16..8 for the hardware back ends");
@@ -151,7 +149,7 @@ int run_render(const RenderArgs& a) {
   if (pipelined) {
     out = run_pipeline(entry, input.polygons ? *input.polygons : trace, params, opt);
   } else {
-    out = render_trace(trace, *backend, params, opt);
+    out = render_trace(entry, trace, params, opt);
     out.stats.frontend = input.frontend;
   }
   if (out.problem) {  // not thrown: see WaveFiles
@@ -207,12 +205,10 @@ int run_render(const RenderArgs& a) {
   std::optional<FrameComparison> compare;
   if (!a.compare.empty()) {  // the same input on the picture yardstick, in this process (it is untimed)
     const BackendEntry& yardstick = backend_named(a.compare);
-    if (!yardstick.make_untimed) throw std::logic_error("--compare needs an untimed back end: " + a.compare);
-    const std::unique_ptr<Backend> ref = yardstick.make_untimed(params);
     const LoadedInput ref_input = load_input(a, params, true);
     RenderOptions ref_opt;
     ref_opt.prune = ref_input.prune;
-    compare = FrameComparison{yardstick.name, render_trace(ref_input.trace, *ref, params, ref_opt).shown};
+    compare = FrameComparison{yardstick.name, render_trace(yardstick, ref_input.trace, params, ref_opt).shown};
   }
   files.add("report.html", [&](const std::string& p) {
     std::ofstream(p) << report_html(report_page_data(report, out.stats), out.shown, frame_png, out.stats, compare, charts);

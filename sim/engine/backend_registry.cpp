@@ -4,7 +4,7 @@
 
 #include "backends/golden_backend.hpp"
 #include "backends/reference_backend.hpp"
-#include "pipeline/approx_engine.hpp"
+#include "backends/approx_backend.hpp"
 #include "report/report_keys.hpp"
 #include "rtl/backend_rtl.hpp"
 #include "timeline/series_switch.hpp"
@@ -24,9 +24,7 @@ std::vector<BackendEntry> make_registry() {
   reference.summary = "double-precision rasterizer: exact edge distances, exact planes";
   reference.capabilities = kSeesSurfaces | kExactPicture;
   reference.refuses = {kNoWave, kNoSampling};
-  reference.make_untimed = [](const Params& p) {
-    return std::make_unique<ReferenceBackend>(EdgeRules{p.fill_top_left, p.edge_flags});
-  };
+  reference.make = [](const Params& p, const BackendRequest&) { return std::make_unique<ReferenceBackend>(p); };
   r.push_back(std::move(reference));
 
   BackendEntry golden;
@@ -34,14 +32,14 @@ std::vector<BackendEntry> make_registry() {
   golden.summary = "bit-exact preparer + DDA + HAD models, functional (counts DDA clocks)";
   golden.capabilities = kDrawsWithDda | kSeesSurfaces;
   golden.refuses = {kNoWave, kNoSampling};
-  golden.make_untimed = [](const Params& p) { return std::make_unique<GoldenBackend>(p); };
+  golden.make = [](const Params& p, const BackendRequest&) { return std::make_unique<GoldenBackend>(p); };
   r.push_back(std::move(golden));
 
   BackendEntry approx;
   approx.name = "approx";
   approx.summary = "SystemC pipeline, golden DDA and HAD, the memory side's timing model";
   approx.capabilities = kDrawsWithDda | kModelsTime | kSeesSurfaces | kSamplesTiming;
-  approx.make_timed = [](const Params& p, const EngineRequest& q) { return make_approx_engine(p, q.sample_rate); };
+  approx.make = [](const Params& p, const BackendRequest& q) { return make_approx_backend(p, q.sample_rate); };
   r.push_back(std::move(approx));
 
   BackendEntry rtl;
@@ -49,7 +47,7 @@ std::vector<BackendEntry> make_registry() {
   rtl.summary = "SystemC pipeline with the Verilated DDA, FIFO, HAD, cache and VRAM";
   rtl.capabilities = kDrawsWithDda | kModelsTime | kRunsRtl | kExactTiming;
   rtl.refuses = {kNoSampling};
-  rtl.make_timed = [](const Params& p, const EngineRequest& q) -> std::unique_ptr<BackendEngine> {
+  rtl.make = [](const Params& p, const BackendRequest& q) -> std::unique_ptr<Backend> {
     std::unique_ptr<BackendRtl> engine = make_backend_rtl(p, 0, q.traced);
     if (record_series()) engine->record_screen_maps();
     return engine;

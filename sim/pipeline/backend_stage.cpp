@@ -7,10 +7,10 @@ namespace girtd {
 using sc_core::sc_time;
 using sc_core::sc_time_stamp;
 
-BackendStage::BackendStage(const sc_core::sc_module_name& name, BackendEngine& engine,
+BackendStage::BackendStage(const sc_core::sc_module_name& name, Backend& backend,
                            const std::vector<FrameSettings>& frames, double tick_ns, double dda_clock_ns,
                            StageActivity& activity, FifoActivity& in_fifo, FrameDone frame_done, Progress progress)
-    : sc_module(name), engine_(engine), frames_(frames), tick_ns_(tick_ns), a_(activity), in_fifo_(in_fifo),
+    : sc_module(name), backend_(backend), time_(*backend.modeled_time()), frames_(frames), tick_ns_(tick_ns), a_(activity), in_fifo_(in_fifo),
       frame_done_(std::move(frame_done)), progress_(std::move(progress)), timeline_(tick_ns * 1e-9, dda_clock_ns * 1e-9) {
   SC_THREAD(run);
   SC_THREAD(sample);
@@ -55,9 +55,9 @@ Token<DdaParams> BackendStage::next_token() {
   a_.state = StageState::kStarved;
   for (;;) {
     const double now_ns = sc_time_stamp().to_seconds() * 1e9;
-    if (!wave_ || !engine_.rtl() || now_ns > wave_->window_end_ns()) {
+    if (!wave_ || !time_.rtl() || now_ns > wave_->window_end_ns()) {
       tok = in.read();
-      engine_.idle_until(tick_of(sc_time_stamp()));
+      time_.idle_until(tick_of(sc_time_stamp()));
       break;
     }
     // Until the window opens, or inside it until the next tick: SystemC
@@ -67,7 +67,7 @@ Token<DdaParams> BackendStage::next_token() {
                               ? sc_time(wave_->window_start_ns(), sc_core::SC_NS)
                               : at(tick_of(sc_time_stamp()) + 1);
     wait(until - sc_time_stamp(), in.data_written_event());
-    engine_.idle_until(tick_of(sc_time_stamp()));
+    time_.idle_until(tick_of(sc_time_stamp()));
     if (in.nb_read(tok)) break;
   }
   a_.starved_s += (sc_time_stamp() - t0).to_seconds();
@@ -78,7 +78,7 @@ Token<DdaParams> BackendStage::next_token() {
 // With no RTL to clock (approx), the SystemC side is sampled once per base
 // tick inside the window, until the back end is done.
 void BackendStage::sample() {
-  if (!wave_ || engine_.rtl()) return;
+  if (!wave_ || time_.rtl()) return;
   for (uint64_t tick = tick_of(sc_time(wave_->window_start_ns(), sc_core::SC_NS)); !finished_; ++tick) {
     const double t_ns = double(tick) * tick_ns_;
     if (t_ns > wave_->window_end_ns()) return;
@@ -91,38 +91,38 @@ void BackendStage::sample() {
 }
 
 void BackendStage::run() {
-  if ((wave_ || lockstep_) && engine_.rtl())
-    engine_.rtl()->on_tick([this](const BackendRtl::TickProbe& p) { on_tick(p); });
+  if ((wave_ || lockstep_) && time_.rtl())
+    time_.rtl()->on_tick([this](const BackendRtl::TickProbe& p) { on_tick(p); });
   uint64_t triangles = 0;
   a_.state = StageState::kBusy;
   // A frame's clear, or its write-back and swap, timed apart from drawing.
   auto frame_work = [this](auto&& work) {
-    engine_.drain();
-    const uint64_t from = engine_.now_tick();
+    time_.drain();
+    const uint64_t from = time_.now_tick();
     work();
-    frame_ticks_ += engine_.now_tick() - from;
-    if (series_) timeline_.read(engine_.now_tick(), engine_.counters());
+    frame_ticks_ += time_.now_tick() - from;
+    if (series_) timeline_.read(time_.now_tick(), time_.counters());
   };
   for (;;) {
-    const uint64_t before = engine_.now_tick();  // the run's end, if the next token is the last
-    sync_to(engine_.ready_tick());
+    const uint64_t before = time_.now_tick();  // the run's end, if the next token is the last
+    sync_to(time_.ready_tick());
     const Token<DdaParams> tok = next_token();
     in_fifo_.pop(sc_time_stamp().to_seconds());
     frame_ = tok.frame;
     switch (tok.kind) {
       case TokenKind::kFrameBegin:
-        frame_work([&] { engine_.begin_frame(frames_.at(tok.frame)); });
+        frame_work([&] { backend_.begin_frame(frames_.at(tok.frame)); });
         break;
       case TokenKind::kItem:
         ++a_.items;
-        engine_.draw(tok.item);
-        if (series_) timeline_.read(engine_.now_tick(), engine_.counters());
-        if (progress_ && (++triangles & 15) == 0) progress_(tok.frame, triangles, at(engine_.now_tick()).to_seconds());
+        backend_.draw(tok.item);
+        if (series_) timeline_.read(time_.now_tick(), time_.counters());
+        if (progress_ && (++triangles & 15) == 0) progress_(tok.frame, triangles, at(time_.now_tick()).to_seconds());
         break;
       case TokenKind::kFrameEnd:
-        frame_work([&] { engine_.end_frame(); });
-        frame_end_ticks_.push_back(engine_.now_tick());
-        frame_end_pixels_.push_back(engine_.result().pixels_generated);
+        frame_work([&] { backend_.end_frame(); });
+        frame_end_ticks_.push_back(time_.now_tick());
+        frame_end_pixels_.push_back(time_.result().pixels_generated);
         if (frame_done_) frame_done_(tok.frame);
         break;
       case TokenKind::kEnd:

@@ -1,4 +1,4 @@
-// The back end as the pipeline's last SystemC module. Its engine keeps its
+// The back end as the pipeline's last SystemC module. A timed back end keeps its
 // own clock in base ticks and may run ahead of SystemC time; the two are
 // brought level whenever a token changes hands, so the preparer sees the
 // FIFO slot freed at the tick the DDA takes the parameter set, and a DDA
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "dda/dda_params.hpp"
-#include "backends/backend_engine.hpp"
+#include "backends/backend.hpp"
 #include "pipeline/counter_timeline.hpp"
 #include "timeline/stage_activity.hpp"
 #include "pipeline/token.hpp"
@@ -32,7 +32,7 @@ class BackendStage : public sc_core::sc_module {
   using Progress = std::function<void(size_t frame, uint64_t triangles, double modeled_s)>;
 
   SC_HAS_PROCESS(BackendStage);
-  BackendStage(const sc_core::sc_module_name& name, BackendEngine& engine, const std::vector<FrameSettings>& frames,
+  BackendStage(const sc_core::sc_module_name& name, Backend& backend, const std::vector<FrameSettings>& frames,
                double tick_ns, double dda_clock_ns, StageActivity& activity, FifoActivity& in_fifo,
                FrameDone frame_done, Progress progress);
 
@@ -63,7 +63,8 @@ class BackendStage : public sc_core::sc_module {
   void on_tick(const BackendRtl::TickProbe& p);
   void sample();
 
-  BackendEngine& engine_;
+  Backend& backend_;
+  ModeledTime& time_;  // backend_'s
   const std::vector<FrameSettings>& frames_;
   double tick_ns_;
   StageActivity& a_;

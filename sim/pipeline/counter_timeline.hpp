@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "backends/backend_engine.hpp"
+#include "backends/modeled_time.hpp"
 #include "timeline/stage_activity.hpp"
 #include "timeline/time_series.hpp"
 

@@ -17,26 +17,21 @@ namespace girtd {
 
 namespace {
 
-std::unique_ptr<BackendEngine> make_engine(const BackendEntry& backend, const Params& p, const RenderOptions& opt) {
-  if (!backend.make_timed) throw std::logic_error("not a timed back end: " + backend.name);
-  return backend.make_timed(p, EngineRequest{opt.wave.has_value(), opt.sample_timing});
-}
-
-// Input the pipeline cannot take: thesis-level traces, a Q the hardware
-// cannot do.
-void check_pipeline_input(const Trace& trace) {
-  if (trace.level == TraceLevel::kThesis)
-    throw InputError(trace.path, 0, "a thesis-level trace runs the appendix program: use --backend golden");
-  require_hardware_q(trace);
+std::unique_ptr<Backend> make_timed(const BackendEntry& backend, const Params& p, const RenderOptions& opt) {
+  if (!backend.timed()) throw std::logic_error("not a timed back end: " + backend.name);
+  std::unique_ptr<Backend> made = backend.make(p, backend_request(opt));
+  if (!made->modeled_time()) throw std::logic_error("a timed back end that models no time: " + backend.name);
+  return made;
 }
 
 }  // namespace
 
 PipelineElaboration::PipelineElaboration(const BackendEntry& backend, const Trace& input, const Params& p,
                                          const RenderOptions& opt, FrameDriver& driver)
-    : p_(p), opt_(opt), engine_(make_engine(backend, p, opt)), driver_(driver) {
+    : p_(p), opt_(opt), backend_(make_timed(backend, p, opt)), time_(*backend_->modeled_time()), driver_(driver) {
   DumpTap* tap = driver.tap();
-  engine_->prune(opt.prune);
+  backend_->prune(opt.prune);
+  backend_->begin(input);
   for (const TraceFrame& f : input.frames) settings_.push_back(f.settings);
   // The stream that entered is dumped as it is; one made inside, by the
   // preparer stage as it crosses (front_end_modules.cpp).
@@ -61,8 +56,8 @@ RenderOutput PipelineElaboration::run() {
   RenderOutput out;
   driver_.finish(out);
   collect(out.stats);
-  out.shown = engine_->shown();
-  out.z = engine_->z_plane();
+  out.shown = backend_->shown();
+  out.z = backend_->z_plane();
   if (wave_) {
     WaveFiles w = wave_->finish(double(back_end_->end_tick()) * p_.base_tick_ns);
     out.wave_files = std::move(w.paths);
@@ -78,7 +73,7 @@ void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
   in_fifo_[&a] = &in_record;
   back_activity_ = &a;
   BackendStage::FrameDone done;
-  done = [this](size_t) { driver_.frame_ended([this] { return engine_->shown(); }); };
+  done = [this](size_t) { driver_.frame_ended([this] { return backend_->shown(); }); };
   BackendStage::Progress progress;
   if (opt_.progress)
     progress = [this](size_t frame, uint64_t triangles, double modeled_s) {
@@ -91,10 +86,10 @@ void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
       std::snprintf(detail + std::strlen(detail), sizeof detail - std::strlen(detail), ", %.3f ms modeled", modeled_s * 1e3);
       driver_.progress(frame, done, total_items_, polygons ? "objects in" : "triangles", detail);
     };
-  back_end_ = std::make_unique<BackendStage>("back_end", *engine_, settings_, p_.base_tick_ns, p_.dda_clock_ns, a, in_record,
+  back_end_ = std::make_unique<BackendStage>("back_end", *backend_, settings_, p_.base_tick_ns, p_.dda_clock_ns, a, in_record,
                                              std::move(done), std::move(progress));
   back_end_->in(in);
-  if (p_.pipeline_rtl_sync_every_tick && engine_->rtl()) back_end_->sync_every_tick(true);
+  if (p_.pipeline_rtl_sync_every_tick && time_.rtl()) back_end_->sync_every_tick(true);
 }
 
 void PipelineElaboration::start_wave(const WaveOptions& w) {
@@ -103,7 +98,7 @@ void PipelineElaboration::start_wave(const WaveOptions& w) {
   check_pipeline_wave_scopes(w.scopes, stages);
   wave_ = std::make_unique<WaveRecorder>(w);
   for (const auto& a : activities_) wave_->add_stage(*a, in_fifo_.at(a.get()));
-  if (engine_->rtl()) wave_->add_rtl(*engine_->rtl());  // approx: the SystemC side alone
+  if (time_.rtl()) wave_->add_rtl(*time_.rtl());  // approx: the SystemC side alone
   wave_->open();
   back_end_->record(wave_.get());
 }
@@ -112,7 +107,6 @@ RenderOutput run_pipeline(const BackendEntry& backend, const Trace& input, const
   static bool elaborated = false;
   if (elaborated) throw std::logic_error("SystemC elaborates once per process: one pipeline run per process");
   elaborated = true;
-  check_pipeline_input(input);
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   if (opt.wave) {
     if (backend.has(kRunsRtl)) check_rtl_wave_scopes(opt.wave->scopes, p);  // before the run's own RTL exists

@@ -16,7 +16,7 @@
 #include "backends/render_session.hpp"
 #include "dda/dda_preparer.hpp"
 #include "frontend/front_end_stages.hpp"
-#include "backends/backend_engine.hpp"
+#include "backends/backend.hpp"
 #include "backends/backend_entry.hpp"
 #include "backends/frame_driver.hpp"
 #include "pipeline/backend_stage.hpp"
@@ -114,7 +114,8 @@ class PipelineElaboration {
 
   const Params& p_;
   const RenderOptions& opt_;
-  std::unique_ptr<BackendEngine> engine_;
+  std::unique_ptr<Backend> backend_;
+  ModeledTime& time_;  // backend_'s
   FrameDriver& driver_;  // the dump tap, kept frames, progress, wall clock
   std::vector<FrameSettings> settings_;
   const Trace* polygon_source_ = nullptr;

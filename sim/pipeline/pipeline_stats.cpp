@@ -15,7 +15,7 @@ void take_fifo_series(const FifoSeries& s, StageStats& st) {
 }  // namespace
 
 void PipelineElaboration::collect(RunStats& s) const {
-  const BackendResult be = engine_->result();
+  const BackendResult be = time_.result();
   const double tick_s = p_.base_tick_ns * 1e-9;
   const double modeled = double(back_end_->end_tick()) * tick_s;
   s.triangles_in = back_activity_->items;
@@ -24,7 +24,7 @@ void PipelineElaboration::collect(RunStats& s) const {
   s.had = be.had;
   s.dda = be.dda;
   s.sampling = be.sampling;
-  s.maps = engine_->screen_maps();
+  s.maps = time_.screen_maps();
   s.frames = settings_.size();
   if (preparer_) s.preparer = preparer_->counts();
   if (polygon_source_) {
@@ -76,7 +76,7 @@ void PipelineElaboration::collect(RunStats& s) const {
   had.blocked_s = 0.0;
   had.stall_s = *had.starved_s;
   had.fifo_in_max = be.fifo_max;
-  if (const auto levels = engine_->fifo_levels(back_end_->end_tick())) take_fifo_series(*levels, had);
+  if (const auto levels = time_.fifo_levels(back_end_->end_tick())) take_fifo_series(*levels, had);
   had.series_bin_s = back_end_->timeline().had().bin_s();
   had.series = back_end_->timeline().had().bins();
   s.stages.push_back(had);

@@ -2,8 +2,8 @@
 // HAD + cache -> VRAM) driven on its base tick from C++. Frames are cleared
 // through the serial port, triangles fed to the DDA's parameter port, the
 // cache flushed and the buffers swapped; the shown buffer and Z are read
-// through a backdoor. One interface, BackendEngine's (backends/backend_engine.hpp),
-// for the pipeline, regress, the benches and the tests; the SystemC stage
+// through a backdoor. One interface, Backend's with its ModeledTime
+// (backends/backend.hpp), for the pipeline, regress, the benches and the tests; the SystemC stage
 // around it synchronizes only when a parameter set changes hands
 // (TOOLCHAIN.md: stepping the --cc model by hand is 5-15x faster than --sc
 // pins on an sc_clock).
@@ -13,7 +13,7 @@
 #include <functional>
 #include <memory>
 
-#include "backends/backend_engine.hpp"
+#include "backends/backend.hpp"
 
 class VerilatedFstC;
 
@@ -22,9 +22,12 @@ namespace girtd {
 // Keep one instance alive at a time: two live Verilated models of the same
 // top (even in separate contexts) share scope names, and Verilator 5.006
 // deadlocks destroying the second (seen in testbench/pipeline).
-class BackendRtl : public BackendEngine {
+class BackendRtl : public Backend, public ModeledTime {
  public:
-  using BackendEngine::begin_frame;
+  using Backend::begin_frame;
+  using Backend::draw;
+  void begin(const Trace& trace) override { require_pipeline_input(trace); }
+  ModeledTime* modeled_time() override { return this; }
   // A frame cleared to `background` (drivers without frame settings).
   void begin_frame(Rgb background) {
     FrameSettings s;

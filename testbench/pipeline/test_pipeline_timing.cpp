@@ -151,10 +151,9 @@ TEST_CASE("the timed front end, stages working on different frames at once, give
   const Trace polygons = read_scene("traces/scenes/animation.json", p);
   REQUIRE(polygons.frames.size() > 1);
   const FrontEndRun fe = run_front_end(polygons, p, PrunePlan{});
-  GoldenBackend golden(p);
   RenderOptions keep;
   keep.keep_all_frames = true;
-  const RenderOutput want = render_trace(fe.triangles, golden, p, keep);
+  const RenderOutput want = render_trace(backend_named("golden"), fe.triangles, p, keep);
 
   const RenderOutput got = run_pipeline(backend_named("approx"), polygons, p, keep);
   REQUIRE(got.stats.frontend);

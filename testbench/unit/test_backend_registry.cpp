@@ -23,8 +23,7 @@ TEST_CASE("the registry: each back end's capabilities, refusals and factory", "[
   CHECK(rtl.capabilities == (kDrawsWithDda | kModelsTime | kRunsRtl | kExactTiming));
   for (const BackendEntry& b : backend_registry()) {
     INFO(b.name);
-    CHECK(bool(b.make_untimed) != bool(b.make_timed));  // exactly one factory
-    CHECK(bool(b.make_timed) == b.timed());
+    CHECK(bool(b.make));
     CHECK(!b.summary.empty());
     std::set<std::string> refused;
     for (const BackendRefusal& r : b.refuses) {
@@ -40,8 +39,14 @@ TEST_CASE("the registry: each back end's capabilities, refusals and factory", "[
   CHECK(&backend_with(kExactTiming) == &rtl);
   CHECK(find_backend("nosuch") == nullptr);
   CHECK_THROWS_AS(backend_named("nosuch"), std::logic_error);
-  // An untimed factory makes a back end that says its own name.
-  CHECK(golden.make_untimed(Params::defaults())->name() == "golden");
+  // One interface: the untimed back ends answer "not modeled" to the timing
+  // questions, a timed one answers them.
+  const Params p = Params::defaults();
+  CHECK(reference.make(p, {})->modeled_time() == nullptr);
+  CHECK(golden.make(p, {})->modeled_time() == nullptr);
+  const std::unique_ptr<Backend> timed = approx.make(p, {});
+  REQUIRE(timed->modeled_time() != nullptr);
+  CHECK(timed->modeled_time()->now_tick() == 0);
 }
 
 TEST_CASE("the frame driver keeps each frame's picture only for --frames all and commits the dump at the end",

@@ -25,8 +25,7 @@ namespace {
 
 LlvmpipeComparison against_llvmpipe(const std::string& backend, const Params& p, const Trace& trace,
                                     const LlvmpipeFrame& l) {
-  auto b = backend_named(backend).make_untimed(p);
-  const RenderOutput out = render_trace(trace, *b, p, {});
+  const RenderOutput out = render_trace(backend_named(backend), trace, p, {});
   const LlvmpipeComparison c =
       compare_with_llvmpipe(trace.frames[0].triangles, out.shown, out.z, l, static_cast<uint16_t>(p.depth_clear));
   std::printf("%s (D %d fraction bits) against llvmpipe: coverage differs on %llu of %llu px (%.4f %%); colour > 1 LSB "

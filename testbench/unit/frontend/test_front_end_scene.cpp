@@ -117,8 +117,7 @@ TEST_CASE("end to end: lit sphere and cube, eight pixels within 2 LSB", "[fronte
   frame.settings.q = 0;  // no fringe: the pixels sampled are interior anyway
   for (const FrontTriangle& t : fe.run_frame(scene(), frame.settings.window)) frame.triangles.push_back(t.tri);
   trace.frames.push_back(frame);
-  auto backend = backend_named("golden").make_untimed(params);
-  const RenderOutput out = render_trace(trace, *backend, params, RenderOptions{});
+  const RenderOutput out = render_trace(backend_named("golden"), trace, params, RenderOptions{});
 
   struct Named {
     const char* name;

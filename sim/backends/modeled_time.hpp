@@ -1,8 +1,9 @@
-// What the pipeline's back-end stage drives: the DDA, FIFO, HAD, cache and
-// VRAM, in base ticks. Two engines: `approx` (golden DDA and HAD for what
-// is drawn, models/timing's timing model for when) and `rtl` (the Verilated
-// girtd_backend, clocked tick by tick). The SystemC stage around them
-// (backend_stage.hpp) hands over parameter sets as they arrive.
+// The timing questions a back end that models time answers (Backend::
+// modeled_time(), backends/backend.hpp), in base ticks of the DDA, FIFO,
+// HAD, cache and VRAM: approx (golden DDA and HAD for what is drawn, the
+// timing model of sim/dda and sim/had for when) and rtl (the Verilated
+// girtd_backend, clocked tick by tick). The SystemC back-end stage
+// (pipeline/backend_stage.hpp) asks them as parameter sets arrive.
 #pragma once
 
 #include <array>
@@ -15,13 +16,11 @@
 #include "common/types.hpp"
 #include "config/params.hpp"
 #include "dda/dda_engine.hpp"
-#include "dda/dda_params.hpp"
 #include "backends/fifo_levels.hpp"
 #include "backends/prune_plan.hpp"
 #include "backends/screen_maps.hpp"
 #include "backends/sampled_timing.hpp"
 #include "had/had.hpp"
-#include "io/png_io.hpp"
 
 namespace girtd {
 
@@ -46,25 +45,18 @@ struct BackendCounters {
   uint64_t dda_clocks = 0, dda_wait_ticks = 0, had_busy_ticks = 0;
 };
 
-class BackendEngine {
+class ModeledTime {
  public:
-  virtual ~BackendEngine() = default;
-  // The tick the DDA can take the next parameter set (the rtl engine clocks
-  // the RTL up to it).
+  virtual ~ModeledTime() = default;
+  // The tick the DDA can take the next parameter set (the rtl back end
+  // clocks the RTL up to it).
   virtual uint64_t ready_tick() = 0;
   // Nothing arrived before `tick`: the back end runs on without input.
   virtual void idle_until(uint64_t tick) = 0;
-  virtual void begin_frame(const FrameSettings& s) = 0;  // clear
-  virtual void draw(const DdaParams& d) = 0;
-  virtual void drain() = 0;      // until the DDA, FIFO and HAD are idle
-  virtual void end_frame() = 0;  // drain, write the cache back, swap
+  virtual void drain() = 0;  // until the DDA, FIFO and HAD are idle
   virtual uint64_t now_tick() const = 0;
   virtual BackendResult result() const = 0;
   virtual BackendCounters counters() const = 0;
-  virtual RgbImage shown() const = 0;
-  virtual std::vector<uint16_t> z_plane() const = 0;
-  // What the simulator may leave out (backends/prune_plan.hpp), before the first frame.
-  virtual void prune(const PrunePlan& plan) { (void)plan; }
   // Where on the screen it spent its effort (report.html's heat maps).
   virtual std::optional<ScreenMaps> screen_maps() const { return std::nullopt; }
   // The DDA -> HAD FIFO's largest count per bin of modeled time, up to `end` (a tick).
@@ -72,7 +64,7 @@ class BackendEngine {
     (void)end;
     return std::nullopt;
   }
-  // Waveforms (rtl only): the RTL to record, and a call on every tick.
+  // Waveforms (the back end that runs the RTL): the RTL to record, and a call on every tick.
   virtual BackendRtl* rtl() { return nullptr; }
 };
 

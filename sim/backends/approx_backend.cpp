@@ -1,14 +1,13 @@
 // The approx back end: the golden DDA and HAD decide every pixel; the
-// timing model of models/timing decides when (its error against the RTL is measured
-// by `girtd bench`, not assumed).
-#include "pipeline/approx_engine.hpp"
+// timing model decides when (its error against the RTL is measured by
+// `girtd bench`, not assumed).
+#include "backends/approx_backend.hpp"
 
 #include <optional>
 #include <vector>
 
 #include "backends/golden_backend.hpp"
-#include "backends/render_session.hpp"
-#include "backends/backend_engine.hpp"
+#include "backends/had_backend.hpp"
 #include "backends/model_series.hpp"
 #include "timeline/series_switch.hpp"
 #include "dda/dda_state_machine.hpp"
@@ -17,11 +16,10 @@
 namespace girtd {
 namespace {
 
-class ApproxEngine : public BackendEngine {
+class ApproxBackend : public HadBackend, public ModeledTime {
  public:
-  ApproxEngine(const Params& p, std::optional<double> sample_rate)
-      : period_ticks_(static_cast<uint64_t>(p.ticks(p.dda_clock_ns))), dda_(p), fb_(p.screen_width, p.screen_height, static_cast<uint16_t>(p.depth_clear)), had_(fb_, p.one_minus_nf),
-        timing_(p) {
+  ApproxBackend(const Params& p, std::optional<double> sample_rate)
+      : HadBackend(p), period_ticks_(static_cast<uint64_t>(p.ticks(p.dda_clock_ns))), dda_(p), timing_(p) {
     if (sample_rate) sampler_.emplace(*sample_rate);
     if (record_series()) series_.emplace(p, timing_);
   }
@@ -29,11 +27,12 @@ class ApproxEngine : public BackendEngine {
     dda_.skip_unreachable_wraps(plan.unreachable_wraps);
     dda_.compute_spans(plan.dda_spans);
   }
+  void begin(const Trace& trace) override { require_pipeline_input(trace); }
+  ModeledTime* modeled_time() override { return this; }
   uint64_t ready_tick() override { return timing_.dda_ready_tick(); }
   void idle_until(uint64_t tick) override { timing_.idle_until(tick); }
   void begin_frame(const FrameSettings& s) override {
-    fb_.clear_back(s.background);
-    had_.set_drop_partial(s.qq);
+    HadBackend::begin_frame(s);
     timing_.begin_frame();
     if (series_) series_->begin_frame();
   }
@@ -60,7 +59,7 @@ class ApproxEngine : public BackendEngine {
   // takes the run's ends).
   struct Sink {
     static constexpr bool kTakesRuns = true;
-    ApproxEngine& e;
+    ApproxBackend& e;
     int layer;
     void operator()(const DdaEmit& px) const {
       e.timing_.pixel({px.cycle, px.pixel.x, px.pixel.y, e.had_.update(px.pixel, layer, px.covered)});
@@ -89,7 +88,7 @@ class ApproxEngine : public BackendEngine {
   void drain() override { timing_.drain(); }
   void end_frame() override {
     timing_.end_frame();
-    fb_.swap();
+    HadBackend::end_frame();
   }
   uint64_t now_tick() const override { return timing_.timing().ticks; }
   BackendCounters counters() const override {
@@ -117,14 +116,10 @@ class ApproxEngine : public BackendEngine {
     if (!series_) return std::nullopt;
     return series_->fifo(end);
   }
-  RgbImage shown() const override { return shown_image(fb_); }
-  std::vector<uint16_t> z_plane() const override { return fb_.z_plane(); }
 
  private:
   uint64_t period_ticks_;
   DdaEngine dda_;
-  FrameBuffer fb_;
-  Had had_;
   BackendTimingModel timing_;
   BackendResult r_;
   std::optional<TriangleSampler> sampler_;
@@ -133,8 +128,8 @@ class ApproxEngine : public BackendEngine {
 
 }  // namespace
 
-std::unique_ptr<BackendEngine> make_approx_engine(const Params& p, std::optional<double> sample_rate) {
-  return std::make_unique<ApproxEngine>(p, sample_rate);
+std::unique_ptr<Backend> make_approx_backend(const Params& p, std::optional<double> sample_rate) {
+  return std::make_unique<ApproxBackend>(p, sample_rate);
 }
 
 }  // namespace girtd
