@@ -1,5 +1,5 @@
 // --backend approx: the golden DDA and HAD for what is drawn, the timing
-// model (sim/dda, sim/had) for when.
+// model (models/timing) for when.
 #pragma once
 
 #include <memory>

@@ -40,7 +40,7 @@ class Backend {
   // DDA parameter set (the preparer's output).
   virtual void draw(const Triangle& t);
   virtual void draw(const DdaParams& d) = 0;
-  virtual void end_frame() = 0;  // the swap
+  virtual void end_frame() = 0;  // the swap (a timed back end drains and writes the cache back first)
   virtual RgbImage shown() const = 0;
   virtual std::vector<uint16_t> z_plane() const = 0;
   // What it counted, after the last frame (a timed back end's counts are

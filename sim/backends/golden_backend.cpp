@@ -23,7 +23,7 @@ void GoldenBackend::begin(const Trace& trace) {
   counts_.dda = DdaRunStats{};  // no triangle reaching the DDA: it ran 0 clocks, as rtl's counters say
   if (!thesis_mode_) return require_hardware_q(trace);
   // PIX_INTERNO fixes Q = 1; the program draws a picture in the frame's top-left corner.
-  had_.set_screen(thesis_screen_.width, thesis_screen_.height);
+  had_.set_screen(thesis_params_.thesis.width, thesis_params_.thesis.height);
 }
 
 // One triangle through a sequencer (the hardware DDA, or DDApix for the
@@ -42,7 +42,7 @@ void GoldenBackend::draw(const Triangle& t) {
     return;
   }
   DdaParams p;
-  if (preparer_.prepare(t, settings_, p) != PrepareResult::kReady) return;
+  if (preparer_.prepare(t, frame_, p) != PrepareResult::kReady) return;
   if (tap_) tap_(p);
   traverse(p);
 }

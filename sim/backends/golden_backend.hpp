@@ -12,7 +12,7 @@ namespace girtd {
 class GoldenBackend : public HadBackend {
  public:
   explicit GoldenBackend(const Params& p)
-      : HadBackend(p), thesis_screen_(p.thesis), preparer_(p), engine_(p), thesis_params_(p.with_thesis_formats()),
+      : HadBackend(p), preparer_(p), engine_(p), thesis_params_(p.with_thesis_formats()),
         ddapix_(thesis_params_, ThesisInside::kProgram) {}
   void begin(const Trace& trace) override;
   void prune(const PrunePlan& plan) override {
@@ -23,23 +23,17 @@ class GoldenBackend : public HadBackend {
     tap_ = std::move(tap);
     return true;
   }
-  void begin_frame(const FrameSettings& s) override {
-    HadBackend::begin_frame(s);
-    settings_ = s;
-  }
   void draw(const Triangle& t) override;
   void draw(const DdaParams& d) override;
   void finish(RunStats& stats) const override;
 
  private:
   void traverse(const DdaParams& p);
-  ThesisParams thesis_screen_;  // the appendix program draws in its own corner of the screen
   DdaPreparer preparer_;
   DdaEngine engine_;
   Params thesis_params_;  // the appendix program's register formats
   bool thesis_mode_ = false;
   DdaPix ddapix_;
-  FrameSettings settings_;  // the frame being drawn (the preparer's)
   std::function<void(const DdaParams&)> tap_;  // --dump dda
   RunStats counts_;  // triangles, pixels, the DDA's statistics
 };

@@ -27,6 +27,7 @@ class HadBackend : public Backend {
   explicit HadBackend(const Params& p)
       : fb_(p.screen_width, p.screen_height, static_cast<uint16_t>(p.depth_clear)), had_(fb_, p.one_minus_nf) {}
   void begin_frame(const FrameSettings& s) override {
+    frame_ = s;
     fb_.clear_back(s.background);
     had_.set_drop_partial(s.qq);
   }
@@ -37,6 +38,7 @@ class HadBackend : public Backend {
  protected:
   FrameBuffer fb_;
   Had had_;
+  FrameSettings frame_;  // the frame being drawn
 };
 
 }  // namespace girtd

@@ -15,7 +15,7 @@ void ReferenceBackend::begin(const Trace& trace) {
 
 void ReferenceBackend::draw(const Triangle& t) {
   ++triangles_in_;
-  const bool drawn = rasterize_reference(t, settings_, rules_, [&](const ReferenceSample& s) {
+  const bool drawn = rasterize_reference(t, frame_, rules_, [&](const ReferenceSample& s) {
     ++pixels_;
     had_.update(quantize_reference(s), s.layer, s.covered);
   });

@@ -10,17 +10,12 @@ class ReferenceBackend : public HadBackend {
  public:
   explicit ReferenceBackend(const Params& p) : HadBackend(p), rules_{p.fill_top_left, p.edge_flags} {}
   void begin(const Trace& trace) override;
-  void begin_frame(const FrameSettings& s) override {
-    HadBackend::begin_frame(s);
-    settings_ = s;
-  }
   void draw(const Triangle& t) override;
   void draw(const DdaParams& d) override;  // refused by begin(): a DDA trace holds no float triangles
   void finish(RunStats& stats) const override;
 
  private:
   EdgeRules rules_;
-  FrameSettings settings_;
   uint64_t triangles_in_ = 0, triangles_drawn_ = 0, pixels_ = 0;
 };
 
