@@ -6,7 +6,7 @@
 #   hw_generated the folder with this elaboration's girtd_pkg.sv and rtl_build.hpp
 function(girtd_add_rtl_model target sim_target hw_generated)
   set(sim ${CMAKE_SOURCE_DIR}/sim)
-  add_library(${target} STATIC ${sim}/rtl/backend_rtl.cpp ${sim}/rtl/backend_rtl_traced.cpp ${sim}/rtl/dda_rtl.cpp
+  add_library(${target} STATIC ${sim}/rtl/backend_rtl.cpp ${sim}/rtl/backend_rtl_traced.cpp ${sim}/dda/dda_rtl.cpp
                                ${sim}/rtl/rtl_build_info.cpp ${sim}/wave/wave_recorder.cpp)
   target_include_directories(${target} PRIVATE ${sim} ${hw_generated})
   target_link_libraries(${target} PUBLIC ${sim_target})

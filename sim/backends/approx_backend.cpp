@@ -11,7 +11,7 @@
 #include "backends/model_series.hpp"
 #include "timeline/series_switch.hpp"
 #include "dda/dda_state_machine.hpp"
-#include "timing/backend_timing.hpp"
+#include "dda/dda_timing.hpp"
 
 namespace girtd {
 namespace {

@@ -1,5 +1,5 @@
 // --backend approx: the golden DDA and HAD for what is drawn, the timing
-// model (models/timing) for when.
+// model (sim/dda, sim/had) for when.
 #pragma once
 
 #include <memory>

@@ -1,4 +1,4 @@
-// report.html's series from approx's timing model (models/timing): the
+// report.html's series from approx's timing model (sim/dda, sim/had): the
 // DDA -> HAD FIFO's occupancy and the two heat maps, fed pixel by pixel as
 // the golden DDA draws. One piece for the approx back end and for the
 // [timing] tests that check it against the RTL's.
@@ -6,9 +6,9 @@
 
 #include <cstdint>
 
-#include "backends/fifo_levels.hpp"
+#include "fifo/fifo_levels.hpp"
 #include "backends/screen_maps.hpp"
-#include "timing/backend_timing.hpp"
+#include "dda/dda_timing.hpp"
 
 namespace girtd {
 

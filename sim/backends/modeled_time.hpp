@@ -1,7 +1,7 @@
 // The timing questions a back end that models time answers (Backend::
 // modeled_time(), backends/backend.hpp), in base ticks of the DDA, FIFO,
 // HAD, cache and VRAM: approx (golden DDA and HAD for what is drawn, the
-// timing model of models/timing for when) and rtl (the Verilated
+// timing model of sim/dda and sim/had for when) and rtl (the Verilated
 // girtd_backend, clocked tick by tick). The SystemC back-end stage
 // (pipeline/backend_stage.hpp) asks them as parameter sets arrive.
 #pragma once
@@ -16,7 +16,7 @@
 #include "common/types.hpp"
 #include "config/params.hpp"
 #include "dda/dda_engine.hpp"
-#include "backends/fifo_levels.hpp"
+#include "fifo/fifo_levels.hpp"
 #include "backends/screen_maps.hpp"
 #include "backends/sampled_timing.hpp"
 #include "had/had.hpp"

@@ -28,7 +28,7 @@
 #include "layout/rtl_layout.hpp"
 #include "common/input_error.hpp"
 #include "rtl/memory_measurements.hpp"
-#include "timing/stage_costs.hpp"
+#include "frontend/stage_costs.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;

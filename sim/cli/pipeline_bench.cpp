@@ -18,7 +18,7 @@
 #include "cli/expectations.hpp"
 #include "io/sha256.hpp"
 #include "rtl/timing_comparison.hpp"
-#include "timing/backend_timing.hpp"
+#include "dda/dda_timing.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;

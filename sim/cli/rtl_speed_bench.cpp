@@ -8,7 +8,7 @@
 #include "cli/bench_stats.hpp"
 #include "cli/child_render.hpp"
 #include "io/trace_reader.hpp"
-#include "rtl/dda_rtl.hpp"
+#include "dda/dda_rtl.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;

@@ -1,11 +1,11 @@
 // The pipeline's stage modules, by what the input is: polygons go through
 // the whole front end, triangles start at the window clip, DDA parameter
 // sets go straight to the back end. Each stage calls its models/ function
-// and charges its flops (models/timing/stage_costs).
+// and charges its flops (sim/frontend/stage_costs).
 #include "backends/front_end_runner.hpp"
 #include "common/triangle_setup.hpp"
 #include "pipeline/pipeline_elaboration.hpp"
-#include "timing/stage_costs.hpp"
+#include "frontend/stage_costs.hpp"
 
 namespace girtd {
 

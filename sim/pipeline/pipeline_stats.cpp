@@ -1,7 +1,7 @@
 // What the run measured, per stage and for the whole pipeline (the report's
 // throughput keys, sim/README.md).
 #include "pipeline/pipeline_elaboration.hpp"
-#include "timing/stage_costs.hpp"
+#include "frontend/stage_costs.hpp"
 
 namespace girtd {
 namespace {

@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "dda/dda_engine.hpp"
-#include "timing/stage_costs.hpp"
+#include "frontend/stage_costs.hpp"
 
 namespace girtd {
 
@@ -196,7 +196,7 @@ std::vector<ReportKey> make_keys() {
                 "waiting for room in the next FIFO (dda: on the full DDA -> HAD FIFO; had: none, its page waits are "
                 "busy time)",
                 kTimed, [](auto&, auto& st) { return opt(st.blocked_s); }),
-      stage_key("flops", "flop", "arithmetic done (front-end stages, preparer; `models/timing/README.md`)", kTimed,
+      stage_key("flops", "flop", "arithmetic done (front-end stages, preparer; `sim/frontend/README.md`)", kTimed,
                 [](auto&, auto& st) { return opt(st.flops); }),
       stage_key("fifo_in_max", "items",
                 "most items (frame markers included) ever in the FIFO in front of the stage; dda: the preparer -> "
@@ -241,7 +241,7 @@ std::vector<ReportKey> make_keys() {
                    &FrontendCounts::back_faces_exempt),
       key("frontend.culling_flops_saved", "flop",
           "what the polygons culling removed would have cost in lighting, view and the depth clip's test "
-          "(`models/timing/stage_costs.hpp` culled_ops); the culling stage's own flops are `stages.culling.flops`",
+          "(`sim/frontend/stage_costs.hpp` culled_ops); the culling stage's own flops are `stages.culling.flops`",
           kEvery, [](auto& r) {
             const FrontendCounts& f = *r.s.frontend;
             return json(culled_ops(f.object_culled_polygons, f.object_culled_corners, f.object_culled_corner_lights).flops() +

@@ -18,7 +18,7 @@
 #include "common/input_error.hpp"
 #include "rtl/backend_rtl.hpp"
 #include "layout/rtl_layout.hpp"
-#include "rtl/port_access.hpp"
+#include "dda/dda_port_access.hpp"
 #include "rtl/rtl_screen_maps.hpp"
 #include "verilated.h"
 

@@ -10,7 +10,7 @@
 #include "had/had.hpp"
 #include "io/trace_reader.hpp"
 #include "rtl/backend_rtl.hpp"
-#include "rtl/dda_compare.hpp"
+#include "dda/dda_compare.hpp"
 #include "workloads/random_triangles.hpp"
 
 namespace girtd {

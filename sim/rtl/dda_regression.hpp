@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "config/params.hpp"
-#include "rtl/dda_rtl.hpp"
+#include "dda/dda_rtl.hpp"
 
 namespace girtd {
 class BackendRtl;

@@ -1,5 +1,5 @@
 // One trace through the two back-end timing engines — the Verilated RTL
-// (hw/backend) and the timing model (models/timing) fed by the golden DDA and
+// (hw/backend) and the timing model (sim/dda, sim/had) fed by the golden DDA and
 // HAD — with their results and wall times side by side.
 #pragma once
 
@@ -9,7 +9,7 @@
 #include "config/params.hpp"
 #include "backends/model_series.hpp"
 #include "rtl/backend_rtl.hpp"
-#include "timing/backend_timing.hpp"
+#include "dda/dda_timing.hpp"
 
 namespace girtd {
 

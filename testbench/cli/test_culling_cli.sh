@@ -24,7 +24,7 @@ for backend in golden approx; do
     && ok || bad "$backend: culling off in the thesis' design"
 done
 # The modeled rate: lighting no longer pays for what is out of view. The
-# culling stage spends 37 flop per object (models/timing/stage_costs.cpp).
+# culling stage spends 37 flop per object (sim/frontend/stage_costs.cpp).
 jq -n --slurpfile a "$TMP/approx/report.json" --slurpfile b "$TMP/approx-obj/report.json" \
   '$b[0].modeled_mpixels_per_s >= 1.5 * $a[0].modeled_mpixels_per_s
    and $b[0].stages.culling.flops == 370 and $a[0].stages.culling.flops == 0' >/dev/null \

@@ -15,8 +15,8 @@
 #include "io/scene_reader.hpp"
 #include "pipeline/pipeline.hpp"
 #include "rtl/backend_rtl.hpp"
-#include "timing/backend_timing.hpp"
-#include "timing/stage_costs.hpp"
+#include "dda/dda_timing.hpp"
+#include "frontend/stage_costs.hpp"
 #include "workloads/random_triangles.hpp"
 
 namespace girtd {

@@ -1,4 +1,4 @@
-// The back end's event timing model (models/timing) against the RTL back end
+// The back end's event timing model (sim/dda, sim/had) against the RTL back end
 // (hw/backend) on the sample traces: the same page misses, DDA waits and
 // tick count, the same FIFO occupancy over time and the same heat maps.
 #include <catch2/catch.hpp>
@@ -54,7 +54,7 @@ void check_trace(const std::string& path, const Params& p = Params::defaults()) 
 
 // The memory-side options, alone and together (run-time inputs of the
 // built RTL). With prefetch, stolen cycles or a write-behind write under
-// way the memory side is stepped tick by tick (models/timing/
+// way the memory side is stepped tick by tick (sim/had/
 // memory_side_ticks), else mostly pixel by pixel; a steal every 1 us (200 ticks) lands in
 // every state of the HAD, the frame clear and the flush.
 nlohmann::json options(const char* text) { return nlohmann::json::parse(text); }

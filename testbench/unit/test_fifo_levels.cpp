@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "backends/fifo_levels.hpp"
+#include "fifo/fifo_levels.hpp"
 
 namespace girtd {
 

@@ -13,7 +13,7 @@
 #include "config/params.hpp"
 #include "layout/rtl_layout.hpp"
 #include "layout/rtl_package.hpp"
-#include "timing/backend_timing.hpp"
+#include "dda/dda_timing.hpp"
 
 namespace girtd {
 namespace {

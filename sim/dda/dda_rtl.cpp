@@ -1,9 +1,9 @@
-#include "rtl/dda_rtl.hpp"
+#include "dda/dda_rtl.hpp"
 
 #include <stdexcept>
 
 #include "Vdda.h"
-#include "rtl/port_access.hpp"
+#include "dda/dda_port_access.hpp"
 #include "verilated.h"
 #if VM_COVERAGE
 #include "verilated_cov.h"

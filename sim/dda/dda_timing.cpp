@@ -1,4 +1,4 @@
-#include "timing/backend_timing.hpp"
+#include "dda/dda_timing.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "timing/stage_costs.hpp"
+#include "frontend/stage_costs.hpp"
 
 namespace girtd {
 

@@ -1,4 +1,4 @@
-#include "timing/memory_side_ticks.hpp"
+#include "had/memory_side_ticks.hpp"
 
 #include <algorithm>
 #include <stdexcept>

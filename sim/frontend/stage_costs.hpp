@@ -5,7 +5,7 @@
 // edge distances in the clip stage, 115 in the preparer; the thesis' total
 // of 181 does not add up). The other stages count the operations of the
 // algorithms in models/frontend; the derivation of each figure is beside it
-// in stage_costs.cpp and tabulated in models/timing/README.md. A stage's time
+// in stage_costs.cpp and tabulated in sim/frontend/README.md. A stage's time
 // per item is these flops over its rate (config pipeline.flops_per_s).
 #pragma once
 

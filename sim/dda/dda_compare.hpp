@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "dda/dda_engine.hpp"
-#include "rtl/dda_rtl.hpp"
+#include "dda/dda_rtl.hpp"
 
 namespace girtd {
 

@@ -1,4 +1,4 @@
-#include "rtl/dda_compare.hpp"
+#include "dda/dda_compare.hpp"
 
 #include <sstream>
 

@@ -15,7 +15,7 @@
 
 #include "config/params.hpp"
 #include "layout/rtl_layout.hpp"
-#include "timing/memory_side_ticks.hpp"
+#include "had/memory_side_ticks.hpp"
 
 namespace girtd {
 
