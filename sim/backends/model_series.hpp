@@ -17,8 +17,8 @@ class ModelSeries {
   // `model` must outlive this; this registers itself with it.
   ModelSeries(const Params& p, BackendTimingModel& model)
       : fifo_(p.base_tick_ns * 1e-9), maps_(p) {
-    model.on_fifo_stays([this](const std::vector<MemorySideTicks::FifoStay>& stays) {
-      for (const MemorySideTicks::FifoStay& s : stays) fifo_.interval(s.push, s.pop);
+    model.on_fifo_stays([this](const std::vector<PixelFifoTicks::Stay>& stays) {
+      for (const PixelFifoTicks::Stay& s : stays) fifo_.interval(s.push, s.pop);
     });
     model.on_page_miss([this](uint32_t page) { maps_.page_missed(page); });
   }

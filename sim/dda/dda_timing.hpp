@@ -56,7 +56,7 @@ class BackendTimingModel {
   const BackendTiming& timing() const { return t_; }
   // Each pixel's FIFO stay, in push order, told in batches as pixels leave
   // (and at each triangle's end): report.html's FIFO series.
-  void on_fifo_stays(MemorySideTicks::StaysListener f) { memory_.on_fifo_stays(std::move(f)); }
+  void on_fifo_stays(PixelFifoTicks::StaysListener f) { memory_.on_fifo_stays(std::move(f)); }
   // Each page miss's page (report.html's heat map), as the HAD takes it.
   void on_page_miss(std::function<void(uint32_t page)> f) { memory_.on_page_miss(std::move(f)); }
   // The tick the DDA can take its next parameter set (its first enabled
