@@ -1,19 +1,40 @@
 #include "rtl/timing_comparison.hpp"
 
 #include <chrono>
+#include <memory>
+#include <vector>
 
-#include "dda/dda_engine.hpp"
+#include "backends/approx_backend.hpp"
 #include "dda/dda_preparer.hpp"
-#include "had/had.hpp"
 #include "io/trace_reader.hpp"
+#include "rtl/backend_rtl.hpp"
+#include "timeline/series_switch.hpp"
 
 namespace girtd {
+namespace {
+
+using Frames = std::vector<std::vector<DdaParams>>;
+
+// The trace's frames through one back end (made outside the timed part);
+// its wall time.
+double draw_frames(Backend& backend, const Trace& trace, const Frames& frames) {
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  backend.begin(trace);
+  for (size_t i = 0; i < frames.size(); ++i) {
+    backend.begin_frame(trace.frames[i].settings);
+    for (const DdaParams& d : frames[i]) backend.draw(d);
+    backend.end_frame();
+  }
+  return std::chrono::duration<double>(clock::now() - t0).count();
+}
+
+}  // namespace
 
 TimingComparison compare_timing(const Params& p, const std::string& trace_path) {
-  using clock = std::chrono::steady_clock;
   const Trace trace = read_trace(trace_path, std::nullopt, p);
   DdaPreparer prep(p);
-  std::vector<std::vector<DdaParams>> frames;
+  Frames frames;
   for (const TraceFrame& f : trace.frames) {
     frames.emplace_back(f.dda);
     DdaParams d;
@@ -21,54 +42,20 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
       if (prep.prepare(t, f.settings, d) == PrepareResult::kReady) frames.back().push_back(d);
   }
   TimingComparison c;
-
-  const auto t0 = clock::now();
-  BackendTimingModel model(p);
-  ModelSeries series(p, model);  // as the approx back end records them
-  DdaEngine dda(p);
-  FrameBuffer fb(p.screen_width, p.screen_height, uint16_t(p.depth_clear));
-  Had had(fb, p.one_minus_nf);
-  std::vector<TimedPixel> pixels;
-  for (size_t i = 0; i < frames.size(); ++i) {
-    fb.clear_back(trace.frames[i].settings.background);
-    model.begin_frame();
-    series.begin_frame();
-    for (const DdaParams& d : frames[i]) {
-      pixels.clear();
-      const DdaRunStats st = dda.run(d, [&](const DdaEmit& e) {
-        pixels.push_back({e.cycle, e.pixel.x, e.pixel.y, had.update(e.pixel)});
-      });
-      model.begin_triangle();
-      for (const TimedPixel& px : pixels) {
-        model.pixel(px);
-        series.pixel(px.x, px.y);
-      }
-      model.end_triangle(st.cycles);
-      series.end_triangle(st.cycles, st.emitted);
-    }
-    model.end_frame();
-    fb.swap();
+  {
+    const std::unique_ptr<Backend> approx = make_approx_backend(p, std::nullopt);
+    c.model_wall_s = draw_frames(*approx, trace, frames);
+    const ModeledTime& time = *approx->modeled_time();
+    c.model = time.result();
+    c.model_fifo = time.fifo_levels(c.model.ticks);
+    c.model_maps = time.screen_maps();
   }
-  c.model = model.timing();
-  c.model_fifo = series.fifo(c.model.ticks);
-  c.model_maps = series.maps();
-  // Made (and reset) outside the timed part, as the pipeline's is.
-  const std::unique_ptr<BackendRtl> made = make_backend_rtl(p);
-  BackendRtl& rtl = *made;
-  rtl.record_screen_maps();
-  const auto t1 = clock::now();
-  for (size_t i = 0; i < frames.size(); ++i) {
-    rtl.begin_frame(trace.frames[i].settings.background);
-    for (const DdaParams& d : frames[i]) rtl.draw(d);
-    rtl.end_frame();
-  }
-  c.rtl = rtl.result();
-  // None recorded under GIRTD_NO_SERIES: then the RTL's series stays empty.
-  if (const auto levels = rtl.fifo_levels(c.rtl.ticks)) c.rtl_fifo = *levels;
-  c.rtl_maps = rtl.screen_maps();
-  const auto t2 = clock::now();
-  c.model_wall_s = std::chrono::duration<double>(t1 - t0).count();
-  c.rtl_wall_s = std::chrono::duration<double>(t2 - t1).count();
+  const std::unique_ptr<BackendRtl> rtl = make_backend_rtl(p);
+  if (record_series()) rtl->record_screen_maps();
+  c.rtl_wall_s = draw_frames(*rtl, trace, frames);
+  c.rtl = rtl->result();
+  c.rtl_fifo = rtl->fifo_levels(c.rtl.ticks);
+  c.rtl_maps = rtl->screen_maps();
   return c;
 }
 

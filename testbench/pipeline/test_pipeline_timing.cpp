@@ -15,7 +15,7 @@
 #include "io/scene_reader.hpp"
 #include "pipeline/pipeline.hpp"
 #include "rtl/backend_rtl.hpp"
-#include "dda/dda_timing.hpp"
+#include "backends/approx_backend.hpp"
 #include "frontend/stage_costs.hpp"
 #include "workloads/random_triangles.hpp"
 
@@ -125,25 +125,21 @@ TEST_CASE("rtl in the pipeline takes exactly the bare Verilated back end's ticks
   CHECK(out.shown.rgb == bare_rgb);
 }
 
-TEST_CASE("approx in the pipeline takes exactly the bare timing model's ticks", "[pipeline]") {
+TEST_CASE("approx in the pipeline takes exactly the bare approx back end's ticks", "[pipeline]") {
   const Params p = Params::defaults();
   const Trace dda = prepared(small_triangles(300, 6), p);
-  BackendTimingModel model(p);
-  DdaEngine engine(p);
-  FrameBuffer fb(1024, 1024, uint16_t(p.depth_clear));
-  Had had(fb, p.one_minus_nf);
-  fb.clear_back(dda.frames[0].settings.background);
-  model.begin_frame();
-  std::vector<TimedPixel> px;
-  for (const DdaParams& d : dda.frames[0].dda) {
-    px.clear();
-    const DdaRunStats st = engine.run(d, [&](const DdaEmit& e) { px.push_back({e.cycle, e.pixel.x, e.pixel.y, had.update(e.pixel)}); });
-    model.triangle(st.cycles, px);
-  }
-  model.end_frame();
+  const std::unique_ptr<Backend> bare = make_approx_backend(p, std::nullopt);
+  bare->begin_frame(dda.frames[0].settings);
+  for (const DdaParams& d : dda.frames[0].dda) bare->draw(d);
+  bare->end_frame();
+  const BackendResult c = bare->modeled_time()->result();
+
   const RenderOutput out = run_pipeline(backend_named("approx"), dda, p, {});
-  CHECK(out.stats.timing->modeled_s == Approx(double(model.timing().ticks) * 5e-9).epsilon(1e-12));
-  CHECK(out.stats.timing->page_misses == model.timing().page_misses);
+  REQUIRE(out.stats.timing);
+  CHECK(out.stats.timing->modeled_s == Approx(double(c.ticks) * 5e-9).epsilon(1e-12));
+  CHECK(out.stats.pixels_generated == c.pixels_generated);
+  CHECK(out.stats.timing->page_misses == c.page_misses);
+  CHECK(out.shown.rgb == bare->shown().rgb);
 }
 
 TEST_CASE("the timed front end, stages working on different frames at once, gives the untimed one's frames", "[pipeline]") {
