@@ -85,10 +85,16 @@ def varied_keys(rows):
     return keys
 
 
+def level_kinds(doc):
+    """What each level is (accuracy.json's level_kinds), by its name: never read from the name."""
+    return {k["level"]: k for k in doc["level_kinds"]}
+
+
 def plot_picture(doc, out_dir, key):
     """key: the one varied key; None when several vary (x is then the variant's label)."""
     value = (lambda r: r["settings"][key]) if key else (lambda r: r["variant"])
-    rows = [r for r in doc["rows"] if r.get("image") and r["level"] != "reference" and
+    kinds = level_kinds(doc)
+    rows = [r for r in doc["rows"] if r.get("image") and not kinds[r["level"]]["picture_yardstick"] and
             (key is None or key in r.get("settings", {}))]
     if not rows:
         return []
@@ -139,7 +145,7 @@ def plot_picture(doc, out_dir, key):
         fig, ax = plt.subplots(figsize=(7, 4.5))
         for i, inp in enumerate(inputs):
             pts = sorted({(r["modeled_time_s"], r["image"]["mean_abs"], str(value(r)))
-                          for r in timed if r["input"] == inp and r["level"] in ("rtl", "approx")})
+                          for r in timed if r["input"] == inp and not kinds[r["level"]]["estimator"]})
             if not pts:
                 continue
             ax.plot([p[0] * 1e3 for p in pts], [p[1] for p in pts], "o", color=cmap(i % 10), label=os.path.basename(inp))

@@ -30,6 +30,11 @@ def runs(prefix):
     return sorted(p.name for p in MEASURED.iterdir() if p.is_dir() and p.name.startswith(prefix)) if MEASURED.exists() else []
 
 
+def level_kinds(doc):
+    """What each level is (accuracy.json's level_kinds), by its name: never read from the name."""
+    return {k["level"]: k for k in doc["level_kinds"]}
+
+
 def source(doc, path, command):
     command = doc.get("command", command)
     inputs = ", ".join("`%s`" % pathlib.Path(i).name for i in doc["inputs"])
@@ -41,27 +46,26 @@ def timing():
     doc, path = load("timing")
     if doc is None:
         return "Not yet recorded (`%s`).\n" % path
-    out = [source(doc, path, "girtd accuracy --out out/accuracy/timing"), "",
-           "| level | what it is | mean wall s | speed-up over rtl | mean \\|time error\\| | max \\|time error\\| | under 1 % | on the front |",
-           "|---|---|---|---|---|---|---|---|"]
-    what = {"rtl": "the Verilated back end in the SystemC pipeline (exact by definition)",
-            "approx": "golden DDA and HAD, the timing model for time",
-            "dda_bound": "golden's DDA clocks x period (no front end, no memory side)"}
+    kinds = level_kinds(doc)
     levels = doc["levels"]
-    rtl_wall = next((l["wall_s_mean"] for l in levels if l["level"] == "rtl"), None)
+    yardstick = next((l for l in levels if kinds[l["level"]]["timing_yardstick"]), None)
+    rtl_wall = yardstick["wall_s_mean"] if yardstick else None
+    out = [source(doc, path, "girtd accuracy --out out/accuracy/timing"), "",
+           "| level | what it is | mean wall s | speed-up over %s | mean \\|time error\\| | max \\|time error\\| | "
+           "under 1 %% | on the front |" % (yardstick["level"] if yardstick else "the yardstick"),
+           "|---|---|---|---|---|---|---|---|"]
     for l in levels:
         name = l["level"]
-        desc = what.get(name, "approx timing 1 triangle in %g, the rest skipped (SMARTS-style, ratio estimator)"
-                        % (1 / float(name.rsplit("_", 1)[1])) if name.startswith("approx_sampled_") else name)
+        desc = kinds[name]["what"] + (" (exact by definition)" if kinds[name]["timing_yardstick"] else "")
         out.append("| `%s` | %s | %.3f | %s | %.3f %% | %.3f %% | %d of %d | %s |" % (
             name, desc, l["wall_s_mean"], ("%.0fx" % (rtl_wall / l["wall_s_mean"])) if rtl_wall else "—",
             100 * l["time_error_mean_abs"], 100 * l["time_error_max_abs"], l["under_1pct"], l["rows"],
             "yes" if l["on_front"] else ""))
-    lp = [r for r in doc["rows"] if r.get("llvmpipe") and r["level"] in ("reference", "golden", "approx", "rtl")]
+    lp = [r for r in doc["rows"] if r.get("llvmpipe") and not kinds[r["level"]]["estimator"]]
     if lp:
         out.append("")
         for r in lp:
-            if r["level"] in ("reference", "rtl"):
+            if kinds[r["level"]]["picture_yardstick"] or kinds[r["level"]]["timing_yardstick"]:
                 out.append("- `%s` against Mesa llvmpipe, `%s`: coverage differs on %d px, colour max %d, mean %.4f LSB."
                            % (r["level"], pathlib.Path(r["input"]).name, r["llvmpipe"]["coverage_diff"],
                               r["llvmpipe"]["max_abs"], r["llvmpipe"]["mean_abs"]))
@@ -82,7 +86,8 @@ def precision():
         variants = {v["variant"]: v for v in doc["variants"]}
         ep = run.split("_", 1)[1]
         for label, v in variants.items():
-            rows = [r for r in doc["rows"] if r["variant"] == label and r["level"] != "reference"]
+            kinds = level_kinds(doc)
+            rows = [r for r in doc["rows"] if r["variant"] == label and not kinds[r["level"]]["picture_yardstick"]]
             if v.get("invalid") or any("invalid" in r for r in rows):
                 reason = v.get("invalid") or next(r["invalid"] for r in rows if "invalid" in r)
                 out.append("| `%s` | invalid: %s | | | | |" % (label, reason.split(": ", 1)[-1]))
@@ -116,7 +121,8 @@ def shortcuts():
         out += table_head(doc, path, ["variant", "mean \\|err\\| vs reference (mean over inputs)", "max \\|err\\| (worst)",
                                       "PSNR dB (mean)", "modeled ms (sum)", "DDA clocks (sum)"])
         for v in doc["variants"]:
-            rows = [r for r in doc["rows"] if r["variant"] == v["variant"] and r["level"] == "approx"
+            kinds = level_kinds(doc)
+            rows = [r for r in doc["rows"] if r["variant"] == v["variant"] and not kinds[r["level"]]["picture_yardstick"]
                     and "invalid" not in r and r.get("image")]
             if not rows:
                 out.append("| `%s` | invalid | | | | |" % v["variant"])

@@ -6,7 +6,7 @@ Reads testbench/measured/bench.json (copied from out/bench/bench.json by
 `tools/girtd docs --record out/bench`) and prints one generated section:
   pipeline  approx against rtl on every sample input (sim/README.md)
   coupling  what the SystemC coupling and waveforms cost (sim/README.md)
-  timing    the timing model against the Verilated back end (sim/frontend/README.md)
+  timing    the timing model against the Verilated back end (sim/had/README.md)
   demo      the demo scene's report on approx (sim/README.md); rendered now, not
             recorded: modeled figures are deterministic
   numerics  wrapped EP values in use on a few inputs, on golden (models/dda/README.md);

@@ -8,7 +8,7 @@ set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${1:-$ROOT/build}"
 cd "$ROOT"
-git diff --quiet -- models || { echo "models/ has uncommitted changes: commit or stash them first"; exit 2; }
+git diff --quiet -- models sim || { echo "models/ or sim/ has uncommitted changes: commit or stash them first"; exit 2; }
 INPUTS=(traces/demo.trace traces/transparent.trace traces/directed/q_variants.trace traces/scenes/demo.json)
 
 # name | file | sed expression (one line changed)
@@ -21,7 +21,7 @@ MUTATIONS=(
 )
 
 caught=0
-trap 'git checkout -q -- models' EXIT
+trap 'git checkout -q -- models sim' EXIT
 for m in "${MUTATIONS[@]}"; do
   IFS='|' read -r name file expr <<< "$m"
   sed -i "$expr" "$file"

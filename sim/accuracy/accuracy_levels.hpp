@@ -20,7 +20,13 @@ struct AccuracyLevel {
   bool draws_frame = true;  // false: the frame is incomplete (sampled timing), no picture error
   bool picture_yardstick = false;  // the back end pictures are judged against (kExactPicture)
   bool timing_yardstick = false;   // the back end modeled time is judged against (kExactTiming)
+  bool estimator = false;  // a cheaper timing estimate made from a back end, not a back end itself
+  std::string what;        // one line for the tables: the registry's summary, or how it estimates
 };
+
+// What accuracy.json says of each level it ran (its "level_kinds"): the
+// tables and tools/accuracy_*.py read these, never the level's name.
+nlohmann::json level_kind(const AccuracyLevel& level);
 
 // A back end's name, dda_bound (the untimed back end with a DDA: its clocks
 // times the period) or approx_sampled_<rate> (the back end that samples

@@ -75,7 +75,7 @@ EpPrecision ep_precision(const Params& p, EpKind ep) {
   r.configured = ep_format(q, ep).frac_bits;
   for (int bits = ep == EpKind::kD ? p.norm_frac_bits : 1; bits <= r.configured + 8; ++bits) {
     ep_format(q, ep).frac_bits = bits;
-    const double e1 = ep_error_after_steps(q, ep, 1024), e2 = ep_error_after_steps(q, ep, 2048);
+    const double e1 = ep_error_after_steps(q, ep, kAcrossSteps), e2 = ep_error_after_steps(q, ep, kCornerSteps);
     if (r.fewest_1024 < 0 && e1 <= ep_bound(ep, bits)) r.fewest_1024 = bits;
     if (r.fewest_2048 < 0 && e2 <= ep_bound(ep, bits)) r.fewest_2048 = bits;
     if (bits == r.configured) r.error_1024 = e1, r.error_2048 = e2;

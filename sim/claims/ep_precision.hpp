@@ -14,6 +14,7 @@
 #include <string>
 
 #include "config/params.hpp"
+#include "girtd/design_constants.hpp"
 
 namespace girtd {
 
@@ -30,6 +31,10 @@ FixFormat& ep_format(Params& p, EpKind ep);
 double ep_budget(EpKind ep);
 double ep_bound(EpKind ep, int frac_bits);
 const char* ep_unit(EpKind ep);
+
+// The thesis' argument steps an EP across the screen (its width: 1,024
+// steps); twice that is a walk from corner to corner.
+inline constexpr int kAcrossSteps = kScreenWidth, kCornerSteps = kScreenWidth + kScreenHeight;
 
 // Worst error in the EP's unit over `triangles` random triangles of up to
 // 1023 px, at N = `steps`.

@@ -117,8 +117,8 @@ json variant_formats(const Params& p) {
     const FixFormat& f = ep_format(q, ep);
     errors[ep_key(ep)] = {{"frac_bits", f.frac_bits},
                           {"unit", ep_unit(ep)},
-                          {"after_1024", ep_error_after_steps(p, ep, 1024)},
-                          {"after_2048", ep_error_after_steps(p, ep, 2048)},
+                          {"after_1024", ep_error_after_steps(p, ep, kAcrossSteps)},
+                          {"after_2048", ep_error_after_steps(p, ep, kCornerSteps)},
                           {"bound_1024", ep_bound(ep, f.frac_bits)}};
     const int count = ep == EpKind::kColor || ep == EpKind::kD ? 3 : 1;  // R, G, B; D1..D3
     register_bits += 4 * count * f.total_bits();
@@ -245,6 +245,8 @@ int run_accuracy(const AccuracyArgs& a) {
     }
   }
 
+  json level_kinds = json::array();
+  for (const AccuracyLevel& level : levels) level_kinds.push_back(level_kind(level));
   const json level_table = level_summary(rows);
   const json counter_table = counter_summary(rows);
   const json agreement = rtl_agreement(rows, yardstick, exact);
@@ -258,7 +260,7 @@ int run_accuracy(const AccuracyArgs& a) {
   for (const std::string& v : a.vary) command += " --vary " + v;
   for (const std::string& c : a.config) command += " --config " + c;
   command += " --out " + a.out_dir;
-  files.add_text("accuracy.json", json{{"command", command}, {"rows", rows}, {"levels", level_table}, {"counters", counter_table}, {"rtl_agreement", agreement}, {"variants", variant_table},
+  files.add_text("accuracy.json", json{{"command", command}, {"rows", rows}, {"level_kinds", level_kinds}, {"levels", level_table}, {"counters", counter_table}, {"rtl_agreement", agreement}, {"variants", variant_table},
                                        {"inputs", inputs}, {"config", a.config}}
                                       .dump(2) + "\n");
   files.add_text("accuracy.csv", accuracy_csv(rows));

@@ -29,7 +29,6 @@
 #include "common/input_error.hpp"
 #include "io/trace_reader.hpp"
 #include "rtl/timing_comparison.hpp"
-#include "dda/dda_timing.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;

@@ -18,7 +18,6 @@
 #include "cli/expectations.hpp"
 #include "io/sha256.hpp"
 #include "rtl/timing_comparison.hpp"
-#include "dda/dda_timing.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;

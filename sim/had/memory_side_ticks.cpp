@@ -137,7 +137,7 @@ uint64_t MemorySideTicks::counting_ticks(const Signals& g, uint64_t tick) const 
 // own ticks. The HAD is then held until its IDLE tick: the registers are
 // already those of that tick; advance_held counts the ticks between.
 [[gnu::always_inline]] inline bool MemorySideTicks::take_pixel(uint64_t in_fifo) {
-  const FifoPixel& head = fifo_.head();
+  const FifoPixel head = fifo_.head();  // a copy: pop_head() frees its slot
   const size_t slot = cache_.slot_of(head.page);
   const bool hit = cache_.holds(slot, head.page);
   const bool write_back = !hit && cache_.must_write_back(slot);

@@ -271,7 +271,7 @@ std::vector<ReportKey> make_keys() {
           kEvery, [](auto& r) { return json(r.ctx.front_end_passes); }),
       key("wall_s", "s", "host wall time of the render (the back end; the front end runs before it on golden and "
           "reference, inside it on approx and rtl)", kEvery, [](auto& r) { return json(r.s.wall_s); }, true),
-      key("image_sha256", "hex", "SHA-256 of the displayed buffer's raw 1024 x 1024 x 3 RGB bytes", kEvery,
+      key("image_sha256", "hex", "SHA-256 of the displayed buffer's raw RGB bytes (screen width x height x 3, row by row)", kEvery,
           [](auto& r) { return json(r.ctx.image_sha256); }, true),
       key("not_modeled", "list", "the registered keys this back end cannot know (their values are null)", kEvery,
           [](auto& r) { return json(not_modeled_keys(r.ctx.capabilities)); }),

@@ -53,6 +53,10 @@ printf 'girtd-trace 1 triangle\ntri 0 0 0 0 0 0 1  9 0 0 0 0 0 nan  0 9 0 0 0 0 
 "$GIRTD" render traces/equilateral_200.trace --backend rtl --sample-timing 0.1 --out "$TMP/refused" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 && ! -e "$TMP/refused" && "$(cat "$TMP/err")" == "--sample-timing: sampled timing is an estimator of the approx back end: use --backend approx" ]] \
   && ok || bad "--sample-timing on rtl: exit $rc, $(cat "$TMP/err")"
+# A back end without a DDA has no DDA parameter sets to dump: refused before the input is read.
+"$GIRTD" render traces/equilateral_200.trace --backend reference --dump "dda=$TMP/refused.dda" --out "$TMP/refused" 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/refused" && ! -e "$TMP/refused.dda" && "$(cat "$TMP/err")" == "--dump: dda: the reference back end has no DDA: dump dda from a back end that has one" ]] \
+  && ok || bad "--dump dda on reference: exit $rc, $(cat "$TMP/err")"
 # Enumerated and ranged options are refused by the parser, one line, exit 2.
 for args in "--frames some" "--aa -1" "--level quad" "--wave-window 0:1us"; do
   "$GIRTD" render traces/equilateral_200.trace $args --out "$TMP/badopt" 2> "$TMP/err"; rc=$?
