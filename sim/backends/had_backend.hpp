@@ -14,14 +14,6 @@
 
 namespace girtd {
 
-inline RgbImage shown_image(const FrameBuffer& fb) {
-  RgbImage img;
-  img.width = fb.width();
-  img.height = fb.height();
-  img.rgb = fb.shown_bytes();
-  return img;
-}
-
 class HadBackend : public Backend {
  public:
   explicit HadBackend(const Params& p)
@@ -32,7 +24,13 @@ class HadBackend : public Backend {
     had_.set_drop_partial(s.qq);
   }
   void end_frame() override { fb_.swap(); }
-  RgbImage shown() const override { return shown_image(fb_); }
+  RgbImage shown() const override {
+    RgbImage img;
+    img.width = fb_.width();
+    img.height = fb_.height();
+    img.rgb = fb_.shown_bytes();
+    return img;
+  }
   std::vector<uint16_t> z_plane() const override { return fb_.z_plane(); }
 
  protected:

@@ -45,7 +45,7 @@ class PixelFifoTicks {
     while (seen_ < q_.size() && q_[seen_].tick < now) ++seen_;
     return seen_;
   }
-  // The count on a later tick, no pop between (after count(now)).
+  // The count on a later tick, no pop between. Scans from the count last asked for, which is at most the count at `tick`.
   uint64_t count_on(uint64_t tick) const {
     size_t n = seen_;
     while (n < q_.size() && q_[n].tick < tick) ++n;

@@ -30,7 +30,6 @@ class VramPortTicks {
   bool busy() const { return port_busy() || claimed(); }
   // A request's own operation ends on this tick (a clear's or a steal's does not count).
   bool done() const { return finishing() && !clearing_ && !stealing_; }
-  bool operating() const { return vbusy_; }
   // Nothing on the port, due or waiting: only the steal counter counts.
   bool quiet() const { return !vbusy_ && !claimed(); }
 
