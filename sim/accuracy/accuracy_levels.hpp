@@ -22,6 +22,7 @@ struct AccuracyLevel {
   bool timing_yardstick = false;   // the back end modeled time is judged against (kExactTiming)
   bool estimator = false;  // a cheaper timing estimate made from a back end, not a back end itself
   std::string what;        // one line for the tables: the registry's summary, or how it estimates
+  std::string modeled_time_key;  // the report.json key holding the modeled time it stands for
 };
 
 // What accuracy.json says of each level it ran (its "level_kinds"): the
@@ -33,8 +34,11 @@ nlohmann::json level_kind(const AccuracyLevel& level);
 // timing); `backends`: the registry. Throws InputError("--backends", ...)
 // for an unknown name.
 AccuracyLevel accuracy_level(const std::string& name, const std::vector<BackendEntry>& backends);
-// The default list: rtl, approx, dda_bound and approx sampled at 1/10 and 1/50.
-std::vector<std::string> default_accuracy_levels();
+// Every name accuracy_level() takes, for help and errors ("<rate>" for the rate).
+std::string accuracy_level_names(const std::vector<BackendEntry>& backends);
+// The default list: the timed back ends (the timing yardstick first),
+// dda_bound and the sampling back end at 1/10 and 1/50.
+std::vector<std::string> default_accuracy_levels(const std::vector<BackendEntry>& backends);
 
 // The level's modeled time from its report.json: modeled_time_s for the
 // timed back ends (estimates included), the DDA-bound time (clocks x

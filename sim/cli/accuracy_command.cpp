@@ -139,7 +139,7 @@ int run_accuracy(const AccuracyArgs& a) {
   const std::vector<std::string> inputs = a.inputs.empty() ? read_input_list(kDefaultInputs) : a.inputs;
   const std::string& exact = backend_with(kExactPicture).name, &yardstick = backend_with(kExactTiming).name;
   std::vector<AccuracyLevel> levels = {accuracy_level(exact, backend_registry())};  // the picture yardstick, run first
-  for (const std::string& name : a.levels.empty() ? default_accuracy_levels() : a.levels)
+  for (const std::string& name : a.levels.empty() ? default_accuracy_levels(backend_registry()) : a.levels)
     if (name != exact) levels.push_back(accuracy_level(name, backend_registry()));
   const std::vector<ConfigVariant> variants = config_variants(a.vary);
   // Bad usage and bad input are found before anything runs or is written.

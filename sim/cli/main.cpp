@@ -6,6 +6,7 @@
 #include <exception>
 #include <filesystem>
 
+#include "accuracy/accuracy_levels.hpp"
 #include "engine/backend_registry.hpp"
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
@@ -124,9 +125,12 @@ int main(int argc, char** argv) {
   CLI::App* accuracy = app.add_subcommand("accuracy", "error against run time: timing estimators against rtl, "
                                                       "pictures against the reference and llvmpipe");
   accuracy->add_option("inputs", ac.inputs, "inputs (default: traces/accuracy_inputs.txt)")->check(CLI::ExistingFile);
+  std::string default_levels;
+  for (const std::string& l : default_accuracy_levels(backend_registry()))
+    default_levels += (default_levels.empty() ? "" : ",") + l;
   accuracy->add_option("--backends", ac.levels,
-                       "levels, comma-separated: rtl, approx, golden, reference, dda_bound, approx_sampled_<rate> "
-                       "(default rtl,approx,dda_bound,approx_sampled_0.1,approx_sampled_0.02; the reference always runs)")
+                       "levels, comma-separated: " + accuracy_level_names(backend_registry()) + " (default " +
+                           default_levels + "; the reference always runs)")
       ->delimiter(',');
   accuracy->add_option("--vary", ac.vary, "KEY=V1,V2,...: a configuration key's values (repeatable: every combination)");
   accuracy->add_option("--config", ac.config, kConfigHelp)->allow_extra_args(false);
