@@ -76,10 +76,10 @@ EpPrecision ep_precision(const Params& p, EpKind ep) {
   for (int bits = ep == EpKind::kD ? p.norm_frac_bits : 1; bits <= r.configured + 8; ++bits) {
     ep_format(q, ep).frac_bits = bits;
     const double e1 = ep_error_after_steps(q, ep, kAcrossSteps), e2 = ep_error_after_steps(q, ep, kCornerSteps);
-    if (r.fewest_1024 < 0 && e1 <= ep_bound(ep, bits)) r.fewest_1024 = bits;
-    if (r.fewest_2048 < 0 && e2 <= ep_bound(ep, bits)) r.fewest_2048 = bits;
-    if (bits == r.configured) r.error_1024 = e1, r.error_2048 = e2;
-    if (r.fewest_2048 >= 0 && bits >= r.configured) break;
+    if (r.fewest_across < 0 && e1 <= ep_bound(ep, bits)) r.fewest_across = bits;
+    if (r.fewest_corner < 0 && e2 <= ep_bound(ep, bits)) r.fewest_corner = bits;
+    if (bits == r.configured) r.error_across = e1, r.error_corner = e2;
+    if (r.fewest_corner >= 0 && bits >= r.configured) break;
   }
   return r;
 }

@@ -35,18 +35,20 @@ const char* ep_unit(EpKind ep);
 // The thesis' argument steps an EP across the screen (its width: 1,024
 // steps); twice that is a walk from corner to corner.
 inline constexpr int kAcrossSteps = kScreenWidth, kCornerSteps = kScreenWidth + kScreenHeight;
+// The largest triangle the random samples draw: one pixel short of the screen.
+inline constexpr int kLargestTrianglePx = kScreenWidth - 1;
 
 // Worst error in the EP's unit over `triangles` random triangles of up to
-// 1023 px, at N = `steps`.
+// kLargestTrianglePx, at N = `steps`.
 double ep_error_after_steps(const Params& p, EpKind ep, int steps, int triangles = 2000, uint32_t seed = 4242);
 
 struct EpPrecision {
   EpKind ep;
   int configured = 0;        // ep.<EP>.frac_bits of the configuration
-  int fewest_1024 = -1;      // fewest fraction bits keeping the budget over 1,024 steps (-1: none tried)
-  int fewest_2048 = -1;      // over 2,048 steps
-  double error_1024 = 0;     // the configured width's errors
-  double error_2048 = 0;
+  int fewest_across = -1;    // fewest fraction bits keeping the budget over kAcrossSteps (-1: none tried)
+  int fewest_corner = -1;    // over kCornerSteps
+  double error_across = 0;   // the configured width's errors
+  double error_corner = 0;
 };
 
 // Tries fraction widths from the fewest the configuration allows (1; D: the

@@ -4,15 +4,16 @@
 #include <cmath>
 
 #include "common/triangle_setup.hpp"
+#include "girtd/design_constants.hpp"
 #include "dda/dda_engine.hpp"
 #include "dda/dda_preparer.hpp"
 
 namespace girtd {
 
 bool overhang_drawn_right(const Params& p, double overhang) {
-  // Corners (-o, -o), (2046 + 2o, -o), (-o, 2046 + 2o): the long edge passes
-  // 1023 + o px beyond the screen's far corner.
-  const double lo = -overhang, hi = 2046 + 2 * overhang;
+  // Corners (-o, -o), (2 (W - 1) + 2o, -o), (-o, 2 (W - 1) + 2o), W the
+  // screen's width: the long edge passes W - 1 + o px beyond its far corner.
+  const double lo = -overhang, hi = 2 * (kScreenWidth - 1) + 2 * overhang;
   Triangle t;
   t.v = {Vertex{lo, lo, 30000, 200, 100, 50, 1}, Vertex{hi, lo, 30000, 200, 100, 50, 1},
          Vertex{lo, hi, 30000, 200, 100, 50, 1}};

@@ -20,6 +20,7 @@
 #include "claims/ep_error.hpp"
 #include "claims/ep_precision.hpp"
 #include "claims/numeric_limits.hpp"
+#include "girtd/design_constants.hpp"
 #include "io/subprocess.hpp"
 #include "io/text_format.hpp"
 #include "claims/thesis_losses.hpp"
@@ -64,41 +65,44 @@ void dda_rows(const Params& p, std::vector<ClaimRow>& rows) {
     }
   }
   rows.push_back({"DDA peak rate at " + format_numbers("%.0f ns", p.dda_clock_ns), "28 Mpixel/s",
-                  format_numbers("%.1f Mpixel/s (one pixel per clock)", mhz), verdict(mhz, 28.0)});
+                  format_numbers("%.1f Mpixel/s (one pixel per clock)", mhz), verdict(mhz, 1e3 / Params::defaults().dda_clock_ns)});
 }
 
 void error_rows(const Params& p, std::vector<ClaimRow>& rows) {
-  const EpErrorSample e = measure_ep_error(p, 300, 1023, 1024, 4242);
+  const EpErrorSample e = measure_ep_error(p, 300, kLargestTrianglePx, kAcrossSteps, 4242);
   const double colour_bound = 1.0 + std::ldexp(1.0, -p.ep_color.frac_bits - 1);
   const double d_bound = 0.125 + std::ldexp(1.0, -p.ep_d.frac_bits - 1);
-  rows.push_back({"error after <= 1024 steps, colour", "<= 1 colour LSB",
+  rows.push_back({format_numbers("error after <= %.0f steps, colour", kAcrossSteps), "<= 1 colour LSB",
                   format_numbers("max %.3f LSB over %.0f pixels (<= %.0f steps)", e.max_color_lsb, double(e.pixels), e.max_steps),
                   e.max_color_lsb <= colour_bound ? "confirmed" : "refuted"});
-  rows.push_back({"error after <= 1024 steps, edge distance", "<= 0.125 px",
+  rows.push_back({format_numbers("error after <= %.0f steps, edge distance", kAcrossSteps), "<= 0.125 px",
                   format_numbers("max %.4f px", e.max_d_px), e.max_d_px <= d_bound ? "confirmed" : "refuted"});
 }
 
 // A row per EP: is the hardware chapter's fraction width the fewest that
-// keeps the thesis' budget over 1,024 steps (claims/ep_precision.hpp)?
+// keeps the thesis' budget over a walk across the screen (claims/ep_precision.hpp)?
 void precision_rows(const Params& p, std::vector<ClaimRow>& rows) {
   for (EpKind ep : kEpKinds) {
     const EpPrecision r = ep_precision(p, ep);
     const std::string key = std::string("ep.") + ep_key(ep) + ".frac_bits";
     const std::string unit = ep_unit(ep);
     std::string verdict = "confirmed";
-    if (r.fewest_1024 < 0) verdict = format_numbers("refuted (needs more than %.0f bits)", r.configured + 8);
-    else if (r.fewest_1024 < r.configured) verdict = format_numbers("refuted (%.0f bits suffice)", r.fewest_1024);
-    else if (r.fewest_1024 > r.configured) verdict = format_numbers("refuted (needs %.0f bits)", r.fewest_1024);
+    if (r.fewest_across < 0) verdict = format_numbers("refuted (needs more than %.0f bits)", r.configured + 8);
+    else if (r.fewest_across < r.configured) verdict = format_numbers("refuted (%.0f bits suffice)", r.fewest_across);
+    else if (r.fewest_across > r.configured) verdict = format_numbers("refuted (needs %.0f bits)", r.fewest_across);
     rows.push_back({"fraction bits of EP " + std::string(ep_key(ep)) + " (" + key + format_numbers(" = %.0f)", r.configured),
-                    format_numbers(ep == EpKind::kD ? "<= %.3f px over 1024 steps" : "<= %.0f LSB over 1024 steps", ep_budget(ep)) +
-                        (ep == EpKind::kZ ? " (no budget stated for Z: 1 LSB of its 16-bit output assumed)" : "") +
+                    format_numbers(ep == EpKind::kD ? "<= %.3f px over %.0f steps" : "<= %.0f LSB over %.0f steps", ep_budget(ep), kAcrossSteps) +
+                        (ep == EpKind::kZ ? format_numbers(" (no budget stated for Z: 1 LSB of its %.0f-bit output assumed)", kZOutBits)
+                                           : std::string()) +
                         " (+ half a fraction LSB: the start value's rounding)",
-                    (r.fewest_2048 < 0 ? format_numbers("fewest keeping it: %.0f bits over 1,024 steps, none up to %.0f over 2,048; ",
-                                             r.fewest_1024, r.configured + 8)
-                                       : format_numbers("fewest keeping it: %.0f bits over 1,024 steps, %.0f over 2,048; ",
-                                             r.fewest_1024, r.fewest_2048)) +
-                        format_numbers("with %.0f: ", r.configured) + format_numbers("%.3f ", r.error_1024) + unit +
-                        format_numbers(" (1,024), %.3f ", r.error_2048) + unit + " (2,048); 2,000 random triangles",
+                    (r.fewest_corner < 0
+                         ? format_numbers("fewest keeping it: %.0f bits over %.0f steps, none up to %.0f over %.0f; ",
+                                          r.fewest_across, kAcrossSteps, r.configured + 8, kCornerSteps)
+                         : format_numbers("fewest keeping it: %.0f bits over %.0f steps, %.0f over %.0f; ", r.fewest_across,
+                                          kAcrossSteps, r.fewest_corner, kCornerSteps)) +
+                        format_numbers("with %.0f: ", r.configured) + format_numbers("%.3f ", r.error_across) + unit +
+                        format_numbers(" (%.0f), %.3f ", kAcrossSteps, r.error_corner) + unit +
+                        format_numbers(" (%.0f); 2,000 random triangles", kCornerSteps),
                     verdict});
   }
 }
@@ -132,13 +136,13 @@ void limits_in_samples(const ConfigFiles& config, std::vector<ClaimRow>& rows) {
 // Issue 17: where the formats stop drawing right, and how often real inputs get there.
 void numerics_rows(const Params& p, const ConfigFiles& config, std::vector<ClaimRow>& rows) {
   std::string growth;
-  for (int steps : {256, 1024, 2048}) {
-    const EpErrorSample e = measure_ep_error(p, 100, 1023, steps, 4242);
+  for (int steps : {kAcrossSteps / 4, kAcrossSteps, kCornerSteps}) {
+    const EpErrorSample e = measure_ep_error(p, 100, kLargestTrianglePx, steps, 4242);
     growth += std::string(growth.empty() ? "" : "; ") + format_numbers("<= %.0f steps: ", steps) +
               format_numbers("colour %.3f, T %.3f, ", e.max_color_lsb, e.max_t_lsb) +
               format_numbers("Z %.3f LSB, D %.4f px", e.max_z_lsb, e.max_d_px);
   }
-  rows.push_back({"EP error growth with the steps walked (100 random triangles up to 1023 px)",
+  rows.push_back({format_numbers("EP error growth with the steps walked (100 random triangles up to %.0f px)", kLargestTrianglePx),
                   "grows by half an LSB of the derivative per step", growth, "measured"});
   std::string collapse;
   for (double area : {1e3, 1e2, 10.0, 1.0, 1e-6, 1e-12}) {
@@ -205,7 +209,7 @@ void memory_rows(const Params& p, std::vector<ClaimRow>& rows) {
   const StreamTiming bare = time_stream(no_cache, PixelStream::kColumn);
   rows.push_back({"no-cache rate (every pixel a page read and write)", "2.27 Mpixel/s",
                   format_numbers("%.2f Mpixel/s (%.1f ns per pixel)", 1e3 / bare.ns_per_pixel, bare.ns_per_pixel),
-                  verdict(1e3 / bare.ns_per_pixel, 2.27)});
+                  verdict(1e3 / bare.ns_per_pixel, 1e3 / (2 * Params::defaults().vram_cycle_ns))});
   Params wb = p;
   wb.had_write_behind = true;
   const StreamTiming wb_row = time_stream(wb, PixelStream::kRow);

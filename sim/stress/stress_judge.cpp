@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "common/triangle_setup.hpp"
+#include "girtd/design_constants.hpp"
 #include "dda/dda_engine.hpp"
 #include "dda/dda_preparer.hpp"
 #include "reference/reference_rasterizer.hpp"
@@ -12,7 +13,7 @@
 namespace girtd {
 namespace {
 
-constexpr double kLongestWalk = 2048;  // steps: across and down the screen
+constexpr double kLongestWalk = kScreenWidth + kScreenHeight;  // steps: across and down the screen
 
 // Per pixel of the screen: how the budget treats it.
 struct Zones {

@@ -32,8 +32,8 @@ TEST_CASE("the fewest fraction bits: one more for twice the steps", "[claims][pr
   const EpPrecision r = ep_precision(Params::defaults(), EpKind::kColor);
   // 9 bits: (1 + 1024) / 1024 = 1.001 LSB, within 1 LSB plus the start's half LSB (2^-10).
   CHECK(r.configured == 9);
-  CHECK(r.fewest_1024 == 9);
-  CHECK(r.fewest_2048 == 10);
+  CHECK(r.fewest_across == 9);
+  CHECK(r.fewest_corner == 10);
 }
 
 }  // namespace
