@@ -14,6 +14,9 @@ template <class T>
 class BlockQueue {
  public:
   void push_back(const T& v) { items_.push_back(v); }
+  // A new, value-initialized entry at the back, for the caller to fill in
+  // place (a whole entry built aside and copied can stall on store forwarding).
+  T& push_back_slot() { return items_.emplace_back(); }
   void pop_front() {
     assert(!empty());
     if (++head_ >= kCompactAfter && head_ * 2 >= items_.size()) {

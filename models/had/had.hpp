@@ -62,8 +62,14 @@ class Had {
   // the run where it holds for all; a run of covered opaque pixels
   // (run.covered_opaque()) gets the same update with nf and covered fixed. The HAD's state and the run are local
   // copies, which the compiler can keep in registers while pixels are written.
-  template <typename Run>
-  [[gnu::always_inline]] void update_run(const Run& pixels, int layer) {
+  // `told(x, y, outcome)` hears each pixel's outcome, in run order (the
+  // approx back end's timing model); the default hears nothing. (Not the
+  // Pixel: passing it made the compiler copy it through memory per pixel.)
+  struct TellNothing {
+    void operator()(int, int, HadOutcome) const {}
+  };
+  template <typename Run, typename Told = TellNothing>
+  [[gnu::always_inline]] void update_run(const Run& pixels, int layer, Told told = {}) {
     Run run = pixels;
     const View v = view();
     HadCounts counts = counts_;
@@ -80,18 +86,18 @@ class Had {
         for (int64_t k = 0; k < n; ++k) {
           Pixel p = run.next().pixel;
           p.nf = kNfOne;
-          v.update_on_screen(counts, p, layer, true);
+          told(p.x, p.y, v.update_on_screen(counts, p, layer, true));
         }
       } else {
         for (int64_t k = 0; k < n; ++k) {
           const auto e = run.next();
-          v.update_on_screen(counts, e.pixel, layer, e.covered);
+          told(e.pixel.x, e.pixel.y, v.update_on_screen(counts, e.pixel, layer, e.covered));
         }
       }
     } else {
       for (int64_t k = 0; k < n; ++k) {
         const auto e = run.next();
-        v.update(counts, e.pixel, layer, e.covered);
+        told(e.pixel.x, e.pixel.y, v.update(counts, e.pixel, layer, e.covered));
       }
     }
     counts_ = counts;

@@ -67,12 +67,10 @@ class ApproxBackend : public HadBackend, public ModeledTime {
     }
     template <typename Run>
     void run(const Run& pixels) const {
-      Run r = pixels;
-      const uint64_t first = r.first_cycle();
-      for (int64_t k = 0; k < r.size(); ++k) {
-        const RunPixel p = r.next();
-        e.timing_.pixel({first + static_cast<uint64_t>(k), p.pixel.x, p.pixel.y, e.had_.update(p.pixel, layer, p.covered)});
-      }
+      uint64_t cycle = pixels.first_cycle();
+      BackendTimingModel& timing = e.timing_;
+      e.had_.update_run(pixels, layer,
+                        [&](int x, int y, HadOutcome o) { timing.pixel({cycle++, x, y, o}); });
       if (e.series_) e.series_->run(pixels.y(), pixels.x_first(), pixels.x_last());
     }
   };

@@ -17,10 +17,10 @@ uint64_t BackendTimingModel::next_en(uint64_t tick) const {
 
 // The DDA holds a pixel while the FIFO is full at its tick `at`: it tries
 // again every DDA clock, counting the clocks lost. The pops before `at` are
-// known once the memory side has run up to it; it runs only when the pixels
-// not yet popped could fill the FIFO (else it runs later, many pixels at once).
+// known once the memory side has run up to it; pixel() calls this only when
+// the pixels not yet popped could fill the FIFO (else the memory side runs
+// later, many pixels at once).
 uint64_t BackendTimingModel::wait_for_room(uint64_t at) {
-  if (memory_.pending() < limit_) return at;
   for (;;) {
     // While the HAD is busy with a pixel it pops none: every pixel pushed
     // (each before `at`) is still in on the ticks up to its IDLE tick, and
@@ -45,15 +45,6 @@ void BackendTimingModel::begin_triangle() {
   tri_clock0_ = next_en(dda_at_) + period_;  // clock 0 (CHECK)
   tri_wait_ticks_ = 0;
   tri_last_push_.reset();
-}
-
-void BackendTimingModel::pixel(const TimedPixel& p) {
-  const uint64_t due = tri_clock0_ + p.cycle * period_ + tri_wait_ticks_;
-  const uint64_t at = wait_for_room(due);
-  tri_wait_ticks_ += at - due;
-  memory_.push(layout_.page.number_of(p.x, p.y), p.outcome, at);
-  ++t_.pixels;
-  tri_last_push_ = at;
 }
 
 void BackendTimingModel::end_triangle(uint64_t dda_cycles) {

@@ -48,7 +48,15 @@ class BackendTimingModel {
   // holds the DDA until it is pushed.
   void triangle(uint64_t dda_cycles, const std::vector<TimedPixel>& pixels);
   void begin_triangle();
-  void pixel(const TimedPixel& p);
+  // Inline: called for every pixel the DDA emits.
+  void pixel(const TimedPixel& p) {
+    const uint64_t due = tri_clock0_ + p.cycle * period_ + tri_wait_ticks_;
+    const uint64_t at = memory_.pending() < limit_ ? due : wait_for_room(due);
+    tri_wait_ticks_ += at - due;
+    memory_.push(layout_.page.number_of(p.x, p.y), p.outcome, at);
+    ++t_.pixels;
+    tri_last_push_ = at;
+  }
   void end_triangle(uint64_t dda_cycles);
   void end_frame();    // drain, write the cache page back, swap
   void drain();        // until the DDA and the HAD are idle
@@ -73,7 +81,7 @@ class BackendTimingModel {
 
  private:
   uint64_t next_en(uint64_t tick) const;  // first DDA-enabled tick at or after `tick`
-  uint64_t wait_for_room(uint64_t at);    // the first DDA tick from `at` with room in the FIFO
+  uint64_t wait_for_room(uint64_t at);    // the first DDA tick from `at` with room in the FIFO (it is full)
   void take_counts();
 
   uint64_t period_, limit_;

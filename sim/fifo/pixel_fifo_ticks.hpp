@@ -34,10 +34,13 @@ class PixelFifoTicks {
   using StaysListener = std::function<void(const std::vector<Stay>&)>;
 
   // In push order, none before `now` (the tick the memory side has reached).
-  void push(const FifoPixel& p, uint64_t now) {
-    if (p.tick < now || (!q_.empty() && p.tick <= q_.back().tick))
+  void push(uint64_t tick, uint32_t page, HadOutcome outcome, uint64_t now) {
+    if (tick < now || (!q_.empty() && tick <= q_.back().tick))
       throw std::logic_error("PixelFifoTicks: a pixel pushed before now or before the last one");
-    q_.push_back(p);
+    FifoPixel& p = q_.push_back_slot();  // field by field: see push_back_slot
+    p.tick = tick;
+    p.page = page;
+    p.outcome = outcome;
   }
   // The count on tick `now`: pixels pushed before it and not popped. Asked
   // for ticks that do not go back (a pop aside).

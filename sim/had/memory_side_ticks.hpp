@@ -36,7 +36,7 @@ class MemorySideTicks {
   // The DDA pushes a pixel of `page` on tick `tick` (at or after now() and
   // after the last push; the memory side need not have reached it): it is
   // in the FIFO from the next tick on.
-  void push(uint32_t page, HadOutcome outcome, uint64_t tick) { fifo_.push({tick, page, outcome}, now_); }
+  void push(uint32_t page, HadOutcome outcome, uint64_t tick) { fifo_.push(tick, page, outcome, now_); }
   // Pixels pushed before now() and not yet popped: the FIFO's count at now().
   uint64_t fifo_count() const { return fifo_.count(now_); }
   // Pixels pushed and not yet popped, those the memory side has not reached included.
