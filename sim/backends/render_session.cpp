@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-#include "common/input_error.hpp"
 #include "backends/dump_tap.hpp"
 #include "backends/frame_driver.hpp"
 
@@ -24,7 +23,8 @@ RenderOutput render_trace(const BackendEntry& entry, const Trace& trace, const P
   DumpTap* tap = driver.tap();
   const bool dda_tap = tap && tap->level() == TraceLevel::kDda;
   if (dda_tap && !backend.tap_dda([tap](const DdaParams& d) { tap->write(d); }))
-    throw InputError(opt.dump->path, 0, "the " + entry.name + " back end has no DDA: dump dda from a back end that has one");
+    // run_render refuses --dump dda up front for a back end without kDrawsWithDda.
+    throw std::logic_error("--dump dda reached the " + entry.name + " back end, which has no DDA");
 
   driver.start();
   RenderOutput out;

@@ -32,7 +32,6 @@ struct BackendTiming {
   uint64_t page_misses = 0;
   uint64_t had_busy_ticks = 0;       // a pixel in hand (pop to done)
   uint64_t had_vram_wait_ticks = 0;  // of those, waiting for a page (write-back and fetch)
-  uint64_t pixels = 0;
   int fifo_max = 0;
 };
 
@@ -54,7 +53,6 @@ class BackendTimingModel {
     const uint64_t at = memory_.pending() < limit_ ? due : wait_for_room(due);
     tri_wait_ticks_ += at - due;
     memory_.push(layout_.page.number_of(p.x, p.y), p.outcome, at);
-    ++t_.pixels;
     tri_last_push_ = at;
   }
   void end_triangle(uint64_t dda_cycles);

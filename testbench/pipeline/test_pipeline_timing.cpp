@@ -117,7 +117,7 @@ TEST_CASE("rtl in the pipeline takes exactly the bare Verilated back end's ticks
 
   const RenderOutput out = run_pipeline(backend_named("rtl"), dda, p, {});
   REQUIRE(out.stats.timing);
-  CHECK(out.stats.timing->modeled_s == Approx(double(c.ticks) * 5e-9).epsilon(1e-12));
+  CHECK(out.stats.timing->modeled_s == Approx(double(c.ticks) * p.base_tick_ns * 1e-9).epsilon(1e-12));
   CHECK(out.stats.pixels_generated == c.pixels_generated);
   CHECK(out.stats.had.written == c.had.written);
   CHECK(out.stats.timing->page_misses == c.page_misses);
@@ -136,7 +136,7 @@ TEST_CASE("approx in the pipeline takes exactly the bare approx back end's ticks
 
   const RenderOutput out = run_pipeline(backend_named("approx"), dda, p, {});
   REQUIRE(out.stats.timing);
-  CHECK(out.stats.timing->modeled_s == Approx(double(c.ticks) * 5e-9).epsilon(1e-12));
+  CHECK(out.stats.timing->modeled_s == Approx(double(c.ticks) * p.base_tick_ns * 1e-9).epsilon(1e-12));
   CHECK(out.stats.pixels_generated == c.pixels_generated);
   CHECK(out.stats.timing->page_misses == c.page_misses);
   CHECK(out.shown.rgb == bare->shown().rgb);
