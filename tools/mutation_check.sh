@@ -16,7 +16,7 @@ MUTATIONS=(
   "preparer start value one LSB high|models/dda/dda_preparer.cpp|s/ep.v = to_fixed(v, fmt, \&c1);/ep.v = to_fixed(v, fmt, \&c1) + 1;/"
   "a derivative one LSB high (dy)|models/dda/dda_preparer.cpp|s/ep.dy = to_fixed(dy, fmt, \&c3);/ep.dy = to_fixed(dy, fmt, \&c3) + 1;/"
   "the Norm one bit short|models/dda/nf_unit.cpp|s/(x >> shift_)/(x >> (shift_ + 1))/"
-  "the HAD's Z test <= for <|models/had/had.cpp|s/if (!(p.z < zb))/if (!(p.z <= zb))/"
+  "the HAD's Z test <= for <|models/had/had.hpp|s/if (!(p.z < zb))/if (!(p.z <= zb))/"
   "a page miss one tick dearer in approx's memory side|sim/had/memory_side_ticks.cpp|s/hit ? 0 : (write_back ? 2 : 1) \* vram_.cycle();/hit ? 0 : (write_back ? 2 : 1) * vram_.cycle() + 1;/"
 )
 
