@@ -37,7 +37,11 @@ DumpRequest parse_dump(const std::string& spec) {
   const size_t eq = spec.find('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == spec.size())
     throw InputError("--dump", 0, "expected LEVEL=FILE, got '" + spec + "'");
-  return {parse_level(spec.substr(0, eq), "--dump", 0), spec.substr(eq + 1)};
+  const TraceLevel level = parse_level(spec.substr(0, eq), "--dump", 0);
+  // A thesis-level trace holds the appendix program's input, which no stage boundary carries.
+  if (level == TraceLevel::kThesis)
+    throw InputError("--dump", 0, "thesis: not a stage boundary (dump polygon, triangle or dda)");
+  return {level, spec.substr(eq + 1)};
 }
 
 // The options this back end refuses (its registry entry), before anything is read.

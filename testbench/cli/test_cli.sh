@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# End-to-end checks of the girtd command line (CONTRACT.md): outputs, report
+# End-to-end checks of the girtd command line (docs/interface.md): outputs, report
 # keys, exit codes and the one-line error format, dump and replay.
 # Usage: test_cli.sh GIRTD_BINARY REPO_ROOT
 source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh" "$1" "$2"
@@ -7,7 +7,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh" "$1" "$2"
 # 1. A render writes frame.png, report.json and report.md with every contract key.
 "$GIRTD" render traces/equilateral_200.trace --backend golden --out "$TMP/eq" --quiet && ok || bad "render exit"
 for f in frame.png report.json report.md; do [[ -s "$TMP/eq/$f" ]] && ok || bad "missing $f"; done
-# The contract's keys (../shared/CONTRACT.md), each present; then exactly
+# The contract's keys (docs/interface.md), each present; then exactly
 # the registry's keys, on both untimed back ends.
 for k in backend input triangles_in triangles_drawn pixels_generated pixels_written pixels_blended \
          pixels_z_rejected pixels_dropped dda_cycles dda_efficiency clock_ns modeled_time_s \
@@ -57,6 +57,10 @@ printf 'girtd-trace 1 triangle\ntri 0 0 0 0 0 0 1  9 0 0 0 0 0 nan  0 9 0 0 0 0 
 "$GIRTD" render traces/equilateral_200.trace --backend reference --dump "dda=$TMP/refused.dda" --out "$TMP/refused" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 && ! -e "$TMP/refused" && ! -e "$TMP/refused.dda" && "$(cat "$TMP/err")" == "--dump: dda: the reference back end has no DDA: dump dda from a back end that has one" ]] \
   && ok || bad "--dump dda on reference: exit $rc, $(cat "$TMP/err")"
+# A thesis-level trace is the appendix program's input, at no stage boundary: not a dump level.
+"$GIRTD" render traces/demo.trace --dump "thesis=$TMP/refused.thesis" --out "$TMP/refused" 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/refused" && ! -e "$TMP/refused.thesis" && "$(cat "$TMP/err")" == "--dump: thesis: not a stage boundary (dump polygon, triangle or dda)" ]] \
+  && ok || bad "--dump thesis: exit $rc, $(cat "$TMP/err")"
 # Enumerated and ranged options are refused by the parser, one line, exit 2.
 for args in "--frames some" "--aa -1" "--level quad" "--wave-window 0:1us"; do
   "$GIRTD" render traces/equilateral_200.trace $args --out "$TMP/badopt" 2> "$TMP/err"; rc=$?
