@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The README's accuracy tables, printed from recorded `girtd accuracy` runs.
+"""docs/studies.md's accuracy tables, printed from recorded `girtd accuracy` runs.
 
 Usage: accuracy_summary.py BUILD_DIR SECTION   (called by tools/generated_docs.py)
 Reads testbench/measured/accuracy/<run>/accuracy.json, each copied there

@@ -11,8 +11,8 @@ Reads testbench/measured/bench.json (copied from out/bench/bench.json by
             recorded: modeled figures are deterministic
   numerics  wrapped EP values in use on a few inputs, on golden (models/dda/README.md);
             rendered now, deterministic
-  culling   culling in front of lighting on every sample scene, modeled (README.md)
-  pruning   simulator pruning's wall-time ratio per sample input (README.md)
+  culling   culling in front of lighting on every sample scene, modeled (docs/studies.md)
+  pruning   simulator pruning's wall-time ratio per sample input (docs/studies.md)
   speed     rtl's DDA clocks per wall second, golden against llvmpipe, and what report.html's series cost
             (sim/README.md; testbench/measured/speed/speed.json, from `girtd bench --speed`)
 """

@@ -61,7 +61,7 @@ def main():
     os.makedirs(OUT, exist_ok=True)
     rgb = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
     write("equilateral_200.trace",
-          "the 200-pixel equilateral triangle (GIRTD.md §9) apex up and apex down on the 128 x 96 screen",
+          "the 200-pixel equilateral triangle (docs/design.md §9) apex up and apex down on the 128 x 96 screen",
           ["bg 0 0 40", "qq 0", line(equilateral(40.3, 47.6, 0, rgb)), line(equilateral(88.6, 48.3, math.pi, rgb))])
     write("overlap.trace", "overlapping Gouraud triangles, one crossing another in depth, two translucent; AA on",
           ["bg 20 20 20", "qq 0"] + overlap_scene())

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # A single-node Slurm cluster on 127.0.0.1, for `girtd sweep --slurm` on one
-# machine and its CTest (../shared/TOOLCHAIN.md has the facts this follows).
+# machine and its CTest: munged, then slurmctld and slurmd from one
+# slurm.conf naming this host on 127.0.0.1.
 #   tools/slurm_local.sh up DIR     start munged (if not running), slurmctld and slurmd;
 #                                   configuration, state, spool, logs and pids in DIR;
 #                                   prints `export SLURM_CONF=DIR/slurm.conf`

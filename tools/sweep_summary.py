@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The README's sweep tables, printed from a recorded `girtd sweep` run.
+"""docs/studies.md's sweep tables, printed from a recorded `girtd sweep` run.
 
 Usage: sweep_summary.py BUILD_DIR NAME   (called by tools/generated_docs.py)
 Reads testbench/measured/sweeps/NAME/results.json (copied with its plot by

@@ -17,7 +17,7 @@ namespace girtd {
 
 enum class OneMinusNf { kExact, kInvertBits };
 
-// The thesis appendix's validation program (GIRTD.md §11): its screen and
+// The thesis appendix's validation program (docs/design.md §11): its screen and
 // its 32-bit register formats, on the same scales as the hardware EPs
 // (colour 0..255, T 0..256, Z 0..65535, D in pixels).
 struct ThesisParams {
@@ -46,7 +46,7 @@ struct Params {
 
   double dda_clock_ns;
   bool xy_compare_pipelined;  // TTL option: +1 clock at every run end
-  bool walk_fix;              // robust start/walk (GIRTD.md §11); false = DDApix as written
+  bool walk_fix;              // robust start/walk (docs/design.md §11); false = DDApix as written
   int output_latency_clocks;  // fig. 4.17 output registers
   // Every frame's antialiasing width Q, over the input's own (config
   // dda.q_override; nullopt: the input's). Applied as inputs are read.

@@ -1,4 +1,4 @@
-// Where a run's numbers left their EP's format (GIRTD.md §4), counted per
+// Where a run's numbers left their EP's format (docs/design.md §4), counted per
 // EP: a wrapped value in use (the register kept the low bits of a sum past
 // its range, at a clock that reads it: D1..D3 where the sequencer tests the
 // edges, R, G, B, T, Z at emission; an edge function that wrapped puts

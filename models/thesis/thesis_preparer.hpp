@@ -1,4 +1,4 @@
-// prepdda of the thesis appendix (GIRTD.md §11), in its own units and in
+// prepdda of the thesis appendix (docs/design.md §11), in its own units and in
 // single precision as the 1988 program computed: screen map, winding, edge
 // equations (a zero-length edge gets D = 1), the start-point search, the
 // limits one pixel wider than the triangle, and ftol (truncation toward zero)

@@ -26,7 +26,7 @@ FixFormat& ep_format(Params& p, EpKind ep);
 // The budget: 1 LSB of the output (colour, T, Z), 0.125 px of edge distance
 // (D), for the derivatives' rounding over N steps; the start value's own
 // rounding, half an LSB of the fraction, comes on top (the thesis' 1,024-step
-// argument counts the derivatives alone; GIRTD.md §4 asks to state the
+// argument counts the derivatives alone; docs/design.md §4 asks to state the
 // bound): ep_bound = budget + 2^-(frac_bits + 1).
 double ep_budget(EpKind ep);
 double ep_bound(EpKind ep, int frac_bits);

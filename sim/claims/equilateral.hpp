@@ -1,4 +1,4 @@
-// The "200-pixel equilateral triangle" of GIRTD.md §9 and the thesis'
+// The "200-pixel equilateral triangle" of docs/design.md §9 and the thesis'
 // per-edge wasted-state formula (§4.2.9).
 #pragma once
 

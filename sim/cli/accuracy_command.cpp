@@ -1,4 +1,4 @@
-// girtd accuracy: error against run time (CONTRACT.md). Every input x
+// girtd accuracy: error against run time (docs/interface.md). Every input x
 // variant x level is a `girtd render` in its own process; the reference
 // back end's frame is each row's picture yardstick, Mesa llvmpipe a second
 // one for opaque Q = 0 triangle-level inputs, rtl each row's timing one.

@@ -1,4 +1,4 @@
-// girtd claims: GIRTD.md §9, each thesis claim next to what this simulator
+// girtd claims: docs/design.md §9, each thesis claim next to what this simulator
 // measures. A row with no measurement yet says so. The front end's rows run
 // the timed pipeline in a child process (SystemC elaborates once per process).
 #include <unistd.h>

@@ -1,4 +1,4 @@
-// The girtd subcommands. Each returns the process exit code (CONTRACT.md):
+// The girtd subcommands. Each returns the process exit code (docs/interface.md):
 // 0 success, 1 a check failed, 2 bad input or usage (InputError).
 #pragma once
 

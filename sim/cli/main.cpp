@@ -1,4 +1,4 @@
-// girtd: the simulator's command line (../shared/CONTRACT.md).
+// girtd: the simulator's command line (docs/interface.md).
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
                      "the frame is incomplete). The accuracy command's approx_sampled_<RATE> level");
 
   ConfigFiles claims_config;
-  CLI::App* claims = app.add_subcommand("claims", "the thesis' claims (GIRTD.md §9) against measurements");
+  CLI::App* claims = app.add_subcommand("claims", "the thesis' claims (docs/design.md §9) against measurements");
   claims->add_option("--config", claims_config, kConfigHelp)->allow_extra_args(false);
   bool claims_campaign = false;
   claims->add_flag("--campaign", claims_campaign,
@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
 
   SweepArgs sw;
   CLI::App* sweep = app.add_subcommand("sweep", "a design-space sweep: every combination of the spec's axes on its inputs");
-  sweep->add_option("spec", sw.spec, "SPEC.json (CONTRACT.md; traces/sweeps/)")->required()->check(CLI::ExistingFile);
+  sweep->add_option("spec", sw.spec, "SPEC.json (docs/interface.md; traces/sweeps/)")->required()->check(CLI::ExistingFile);
   sweep->add_option("--jobs", sw.jobs, "renders at once (default: every core); with --slurm, array tasks (default 64)")
       ->check(CLI::PositiveNumber);
   sweep->add_option("--out", sw.out_dir, "output directory (default out/sweep/<spec name>; a rerun resumes there)");

@@ -1,4 +1,4 @@
-// girtd sweep: a design-space sweep (CONTRACT.md). Every point x input is a
+// girtd sweep: a design-space sweep (docs/interface.md). Every point x input is a
 // `girtd render` in its own process, run by a pool of local workers (or, with
 // --slurm, a Slurm job array running `girtd sweep --slice I/S`); each row is kept
 // in DIR/rows/ as it completes, so a rerun skips what is there and a killed

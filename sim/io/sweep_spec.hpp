@@ -1,4 +1,4 @@
-// A sweep specification (CONTRACT.md `girtd sweep`): inputs, back end, base
+// A sweep specification (docs/interface.md `girtd sweep`): inputs, back end, base
 // configuration files, frames per input, rtl spot checks, and the axes. An
 // axis named by a dotted configuration key takes values of that key; an
 // axis whose values are objects sets several keys together. Axes are kept

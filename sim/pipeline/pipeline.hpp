@@ -1,4 +1,4 @@
-// GIRTD's pipeline (GIRTD.md §2) as a SystemC simulation: one module per
+// GIRTD's pipeline (docs/design.md §2) as a SystemC simulation: one module per
 // stage, a FIFO of pipeline.fifo_depth items between each pair, the back end
 // (approx or rtl) last. What enters depends on the input's level: polygons
 // start at lighting, triangles at the window clip, DDA parameter sets at the

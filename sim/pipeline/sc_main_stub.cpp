@@ -1,4 +1,5 @@
 // libsystemc.so defines main() and calls sc_main(); girtd has its own main()
 // and starts SystemC itself (sim/pipeline), so the library's entry point is
-// never used. Kept out of any file that includes systemc.h (TOOLCHAIN.md).
+// never used, but must link. Kept out of any file that includes systemc.h
+// (which declares sc_main itself).
 extern "C" int sc_main(int, char**) { return 0; }

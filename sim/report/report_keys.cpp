@@ -260,7 +260,7 @@ std::vector<ReportKey> make_keys() {
       frontend_key("triangles_made", "by the triangulator", &FrontendCounts::triangles_made),
       frontend_key("made_edges", "diagonals the triangulator made (invisible in wire-frame)", &FrontendCounts::made_edges),
       frontend_key("degenerate_triangles", "no screen area", &FrontendCounts::degenerate_triangles),
-      frontend_key("discarded_off_window", "no start point (GIRTD.md §3)", &FrontendCounts::discarded_off_window),
+      frontend_key("discarded_off_window", "no start point (docs/design.md §3)", &FrontendCounts::discarded_off_window),
       frontend_key("triangles_out", "to the preparer", &FrontendCounts::triangles_out),
       frontend_key("depth_sort_comparisons", "comparisons the depth sort made", &FrontendCounts::depth_sort_comparisons),
       frontend_key("full_sorts", "frames sorted from scratch", &FrontendCounts::full_sorts),

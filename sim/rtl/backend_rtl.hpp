@@ -5,8 +5,8 @@
 // through a backdoor. One interface, Backend's with its ModeledTime
 // (backends/backend.hpp), for the pipeline, regress, the benches and the tests; the SystemC stage
 // around it synchronizes only when a parameter set changes hands
-// (TOOLCHAIN.md: stepping the --cc model by hand is 5-15x faster than --sc
-// pins on an sc_clock).
+// (stepping Verilator's --cc model by hand measured 5-15x faster than its
+// --sc model's pins on an sc_clock).
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// The generated extreme inputs of `girtd stress` (../shared/CONTRACT.md),
+// The generated extreme inputs of `girtd stress` (docs/interface.md),
 // family by family. A case is a triangle trace or a scene (nearplane, through
 // the front end); the `order` family's cases carry the same triangles in
 // every vertex order, which must all draw one picture.

@@ -1,4 +1,4 @@
-// The verdict on one `girtd stress` case (../shared/CONTRACT.md):
+// The verdict on one `girtd stress` case (docs/interface.md):
 //   exact    golden == rtl (picture, counts, numerics) and golden within the
 //            thesis' budget of the reference (below), no seams;
 //   flagged  every difference beyond the budget lies on pixels a triangle

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# girtd accuracy end to end (CONTRACT.md), on the demo trace (Q = 1) and
+# girtd accuracy end to end (docs/interface.md), on the demo trace (Q = 1) and
 # the opaque Q = 0 trace llvmpipe can draw:
 # - the timing levels against rtl: approx is rtl's time (within 0.1 %), the
 #   DDA-bound time is below it (the DDA alone, no memory side, cannot take

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# girtd sweep end to end (CONTRACT.md) on traces/sweeps/small.json: 32 points
+# girtd sweep end to end (docs/interface.md) on traces/sweeps/small.json: 32 points
 # (5 axes, one of them setting two keys together) x 2 inputs, 2 frames each.
 # - invalid points (a FIFO depth over the built 32) are rows with the
 #   reason, not runs; approx runs prefetch (stepped memory side);

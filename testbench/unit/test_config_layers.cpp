@@ -50,7 +50,7 @@ TEST_CASE("configuration files merge in order and the later wins", "[params]") {
 }
 
 TEST_CASE("the design's constants are in the configuration and cannot be changed", "[params]") {
-  // config/constants.json's values, as the thesis fixes them (GIRTD.md):
+  // config/constants.json's values, as the thesis fixes them (docs/design.md):
   // a 1024 x 1024 screen, 8-bit colour and T, 16-bit Z, nf with 8 fraction bits.
   const Params d = Params::defaults();
   CHECK(d.screen_width == 1024);

@@ -1,5 +1,5 @@
 // models/cost/hardware_cost.hpp on the thesis' design, worked by hand from
-// GIRTD.md §4 and the weights the header states.
+// docs/design.md §4 and the weights the header states.
 #include <catch2/catch.hpp>
 
 #include "cost/hardware_cost.hpp"

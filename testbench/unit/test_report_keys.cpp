@@ -1,5 +1,5 @@
 // The report key registry (sim/report/report_keys.cpp) against the
-// contract's list (../shared/CONTRACT.md, copied here by hand) and its own
+// contract's list (docs/interface.md, copied here by hand) and its own
 // rules: every key once, summary keys at the top level, a registered back
 // end's not_modeled exactly the keys it cannot know.
 #include <catch2/catch.hpp>

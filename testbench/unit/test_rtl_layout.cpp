@@ -1,5 +1,5 @@
 // The hardware's derived layouts (models/layout/rtl_layout.hpp) against
-// values worked by hand from GIRTD.md: the 69-bit FIFO word of fig. 4.17, the
+// values worked by hand from docs/design.md: the 69-bit FIFO word of fig. 4.17, the
 // 16 x 1 page of 4.2.11.4 and other page shapes, the 64-bit VRAM word; the RTL
 // build key; and the timing model's cache of several pages.
 #include <catch2/catch.hpp>
