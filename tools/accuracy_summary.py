@@ -2,7 +2,7 @@
 """docs/studies.md's accuracy tables, printed from recorded `girtd accuracy` runs.
 
 Usage: accuracy_summary.py BUILD_DIR SECTION   (called by tools/generated_docs.py)
-Reads testbench/measured/accuracy/<run>/accuracy.json, each copied there
+Reads results/accuracy/<run>/accuracy.json, each copied there
 with its plots by `tools/girtd docs --record out/accuracy/<run>`:
   timing      run `timing`: every timing level's error against rtl and wall time
   precision   runs `precision_<ep>`: the frame's error per EP fraction width, and
@@ -15,7 +15,7 @@ import statistics
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-MEASURED = ROOT / "testbench/measured/accuracy"
+MEASURED = ROOT / "results/accuracy"
 
 
 def load(run):
@@ -109,7 +109,7 @@ def precision():
                                                   "the same frame as golden" if a["agrees"] else "**differs from golden**"))
     if checked:
         out.append("On rtl (a variant RTL built for each width; `girtd accuracy --backends golden,rtl --vary ...`, "
-                   "recorded as `testbench/measured/accuracy/rtl_*`): " + "; ".join(checked) + ".")
+                   "recorded as `results/accuracy/rtl_*`): " + "; ".join(checked) + ".")
         out.append("")
     return "\n".join(out)
 

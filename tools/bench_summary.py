@@ -2,7 +2,7 @@
 """The READMEs' measured numbers, printed from a recorded `girtd bench` run.
 
 Usage: bench_summary.py BUILD_DIR SECTION   (called by tools/generated_docs.py)
-Reads testbench/measured/bench.json (copied from out/bench/bench.json by
+Reads results/bench.json (copied from out/bench/bench.json by
 `tools/girtd docs --record out/bench`) and prints one generated section:
   pipeline  approx against rtl on every sample input (sim/README.md)
   coupling  what the SystemC coupling and waveforms cost (sim/README.md)
@@ -14,7 +14,7 @@ Reads testbench/measured/bench.json (copied from out/bench/bench.json by
   culling   culling in front of lighting on every sample scene, modeled (docs/studies.md)
   pruning   simulator pruning's wall-time ratio per sample input (docs/studies.md)
   speed     rtl's DDA clocks per wall second, golden against llvmpipe, and what report.html's series cost
-            (sim/README.md; testbench/measured/speed/speed.json, from `girtd bench --speed`)
+            (sim/README.md; results/speed/speed.json, from `girtd bench --speed`)
 """
 import json
 import pathlib
@@ -23,7 +23,7 @@ import sys
 import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-RECORD = ROOT / "testbench/measured/bench.json"
+RECORD = ROOT / "results/bench.json"
 LARGE = 100_000  # pixels: below this, fixed per-run costs dominate
 
 
@@ -83,7 +83,7 @@ def timing(b):
 def culling(b):
     out = [source(b), "",
            "| scene | polygons | objects culled (their polygons) | thesis: ms, Mpixel/s | `culling.objects`: ms, "
-           "Mpixel/s | frame | `presets/culling.json`: back faces culled, ms, Mpixel/s | pixels changed |",
+           "Mpixel/s | frame | `config/presets/culling.json`: back faces culled, ms, Mpixel/s | pixels changed |",
            "|---|---|---|---|---|---|---|---|"]
     for r in b["culling"]:
         ms = lambda k: 1e3 * r[k]
@@ -122,7 +122,7 @@ def pruning(b):
     return "\n".join(out) + "\n"
 
 
-SPEED = ROOT / "testbench/measured/speed/speed.json"
+SPEED = ROOT / "results/speed/speed.json"
 
 
 def speed(_):

@@ -2,7 +2,7 @@
 """docs/studies.md's sweep tables, printed from a recorded `girtd sweep` run.
 
 Usage: sweep_summary.py BUILD_DIR NAME   (called by tools/generated_docs.py)
-Reads testbench/measured/sweeps/NAME/results.json (copied with its plot by
+Reads results/sweeps/NAME/results.json (copied with its plot by
 `tools/girtd docs --record out/sweep/NAME`) and prints the point counts, the
 cheapest point meeting the target on every input and the Pareto front.
 """
@@ -15,7 +15,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 
 def main():
     name = sys.argv[2]
-    path = ROOT / "testbench/measured/sweeps" / name / "results.json"
+    path = ROOT / "results/sweeps" / name / "results.json"
     if not path.exists():
         print("Not yet recorded (`%s`)." % path.relative_to(ROOT))
         return

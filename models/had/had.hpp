@@ -56,8 +56,8 @@ class Had {
   HadOutcome update(const Pixel& p, int layer = -1, bool covered = false) {
     return view().update(counts_, p, layer, covered);
   }
-  // update() for each pixel of a run along one row (the golden DDA's span
-  // path): run.size() pixels from x_first() to x_last() on row y(), each
+  // update() for each pixel of a run along one row (the DDA model's span
+  // path, on golden and approx): run.size() pixels from x_first() to x_last() on row y(), each
   // from run.next() (.pixel, .covered). The screen test is made once for
   // the run where it holds for all; a run of covered opaque pixels
   // (run.covered_opaque()) gets the same update with nf and covered fixed. The HAD's state and the run are local

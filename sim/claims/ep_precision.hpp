@@ -33,7 +33,7 @@ double ep_bound(EpKind ep, int frac_bits);
 const char* ep_unit(EpKind ep);
 
 // The thesis' argument steps an EP across the screen (its width: 1,024
-// steps); twice that is a walk from corner to corner.
+// steps); across and down (width + height) is a walk from corner to corner.
 inline constexpr int kAcrossSteps = kScreenWidth, kCornerSteps = kScreenWidth + kScreenHeight;
 // The largest triangle the random samples draw: one pixel short of the screen.
 inline constexpr int kLargestTrianglePx = kScreenWidth - 1;

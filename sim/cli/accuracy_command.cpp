@@ -251,7 +251,7 @@ int run_accuracy(const AccuracyArgs& a) {
   const json counter_table = counter_summary(rows);
   const json agreement = rtl_agreement(rows, yardstick, exact);
   OutputSet files(a.out_dir);
-  std::string command = "girtd accuracy";  // what regenerates this run (the README quotes it)
+  std::string command = "girtd accuracy";  // what regenerates this run (docs/studies.md quotes it)
   for (const std::string& i : a.inputs) command += " " + i;
   if (!a.levels.empty()) {
     command += " --backends ";

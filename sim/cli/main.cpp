@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
   claims->add_option("--config", claims_config, kConfigHelp)->allow_extra_args(false);
   bool claims_campaign = false;
   claims->add_flag("--campaign", claims_campaign,
-                   "only chapter 5's rows read from the study campaign's stored results (fast; the README's table)");
+                   "only chapter 5's rows read from the study campaign's stored results (fast; docs/studies.md's table)");
 
   BenchArgs ba;
   CLI::App* bench = app.add_subcommand("bench", "speed and error tables of the back ends");

@@ -52,7 +52,8 @@ void reject_unbuilt_options(const RenderArgs& a, const BackendEntry& backend) {
     if (it == given.end()) throw std::logic_error("a refusal of an option render does not have: " + r.option);
     if (it->second) throw InputError(r.option, 0, r.reason);
   }
-  if (!a.dump.empty() && !backend.has_dda() && parse_dump(a.dump).level == TraceLevel::kDda)
+  // The dump level is checked before the input is read (parse_dump refuses a bad one).
+  if (!a.dump.empty() && parse_dump(a.dump).level == TraceLevel::kDda && !backend.has_dda())
     throw InputError("--dump", 0, "dda: the " + backend.name + " back end has no DDA: dump dda from a back end that has one");
   if (a.sample_timing && !(*a.sample_timing > 0 && *a.sample_timing <= 1))
     throw InputError("--sample-timing", 0, "the rate must lie in (0, 1]");

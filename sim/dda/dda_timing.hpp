@@ -79,7 +79,7 @@ class BackendTimingModel {
 
  private:
   uint64_t next_en(uint64_t tick) const;  // first DDA-enabled tick at or after `tick`
-  uint64_t wait_for_room(uint64_t at);    // the first DDA tick from `at` with room in the FIFO (it is full)
+  uint64_t wait_for_room(uint64_t at);    // the first DDA tick from `at` with room in the FIFO (called when the pixels not yet popped could fill it)
   void take_counts();
 
   uint64_t period_, limit_;

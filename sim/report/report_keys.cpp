@@ -277,7 +277,7 @@ std::vector<ReportKey> make_keys() {
           [](auto& r) { return json(not_modeled_keys(r.ctx.capabilities)); }),
       key("warnings", "list of text",
           "input the run went on from, each `FILE: what` and also printed on stderr as `warning: FILE: what` (a "
-          "model's missing `.mtl`, an unknown material: `io/README.md`); empty when there were none",
+          "model's missing `.mtl`, an unknown material: `sim/io/README.md`); empty when there were none",
           kEvery, [](auto& r) { return json(r.ctx.warnings); }),
       key("left_out", "list",
           "what the simulator skipped computing in this run, `{\"unit\", \"reason\"}` each, the reason saying "

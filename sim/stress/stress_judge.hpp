@@ -8,7 +8,8 @@
 //            (`pixels_reblended`) and warned of them;
 //   FAIL     a silent difference, golden != rtl, a crash or a hang.
 // The budget, from the formats (the thesis' 1 LSB and 0.125 px per 1024
-// steps, stretched to the longest walk of 2048 steps: 0.25 px, and 1 LSB of
+// steps, stretched to the longest walk, width + height = 2,048 steps on
+// the 1024 x 1024 screen: 0.25 px, and 1 LSB of
 // truncation plus 2 of the colour EP's error): a pixel is excused when it
 // lies within the D error of an edge or in a fringe (whose colour moves with
 // the edge), or where two triangles' depths are within the Z error;

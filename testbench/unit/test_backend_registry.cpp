@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <set>
 
+#include "accuracy/accuracy_levels.hpp"
 #include "backends/frame_driver.hpp"
+#include "common/input_error.hpp"
 #include "engine/backend_registry.hpp"
 #include "frontend/input_test_support.hpp"
 
@@ -89,6 +91,25 @@ TEST_CASE("the frame driver keeps each frame's picture only for --frames all and
   CHECK(reads == 2);
   CHECK(out_b.per_frame.size() == 2);
   CHECK(std::filesystem::exists(dump));
+}
+
+// girtd accuracy's levels come from the registry's capabilities: the list
+// as the accuracy command has always run it, written out by hand.
+TEST_CASE("accuracy levels: the default list and the estimators, from capabilities", "[registry]") {
+  const std::vector<BackendEntry>& r = backend_registry();
+  CHECK(default_accuracy_levels(r) ==
+        std::vector<std::string>{"rtl", "approx", "dda_bound", "approx_sampled_0.1", "approx_sampled_0.02"});
+  const AccuracyLevel bound = accuracy_level("dda_bound", r);
+  CHECK(bound.backend == "golden");
+  CHECK(bound.modeled_time_key == "dda_bound_time_s");
+  const AccuracyLevel sampled = accuracy_level("approx_sampled_0.1", r);
+  CHECK(sampled.backend == "approx");
+  CHECK(sampled.render_args == std::vector<std::string>{"--sample-timing", "0.1"});
+  CHECK_FALSE(sampled.draws_frame);
+  CHECK(accuracy_level("rtl", r).timing_yardstick);
+  CHECK(accuracy_level("reference", r).picture_yardstick);
+  CHECK_THROWS_AS(accuracy_level("approx_sampled_2", r), InputError);
+  CHECK_THROWS_AS(accuracy_level("fast", r), InputError);
 }
 
 }  // namespace girtd
