@@ -17,7 +17,7 @@
 #include "claims/ep_precision.hpp"
 #include "cli/child_render.hpp"
 #include "cli/commands.hpp"
-#include "cli/output_set.hpp"
+#include "io/output_set.hpp"
 #include "common/input_error.hpp"
 #include "io/image_compare.hpp"
 #include "io/png_io.hpp"

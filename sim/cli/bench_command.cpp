@@ -18,7 +18,7 @@
 #include "engine/backend_registry.hpp"
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
-#include "cli/output_set.hpp"
+#include "io/output_set.hpp"
 #include "cli/leave_out_bench.hpp"
 #include "cli/golden_speed_bench.hpp"
 #include "cli/rtl_speed_bench.hpp"

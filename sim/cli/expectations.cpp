@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cli/output_set.hpp"
+#include "io/output_set.hpp"
 #include "common/input_error.hpp"
 
 namespace girtd {

@@ -14,7 +14,7 @@
 #include "cli/commands.hpp"
 #include "cli/config_loader.hpp"
 #include "rtl/rtl_build_info.hpp"
-#include "cli/output_set.hpp"
+#include "io/output_set.hpp"
 #include "common/input_error.hpp"
 #include "common/triangle_setup.hpp"
 #include "io/png_io.hpp"

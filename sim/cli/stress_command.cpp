@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
-#include "cli/output_set.hpp"
+#include "io/output_set.hpp"
 #include "common/input_error.hpp"
 #include "io/json_file.hpp"
 #include "io/png_io.hpp"

@@ -25,7 +25,7 @@
 
 #include "cli/child_render.hpp"
 #include "cli/commands.hpp"
-#include "cli/output_set.hpp"
+#include "io/output_set.hpp"
 #include "common/file_text.hpp"
 #include "common/input_error.hpp"
 #include "io/input_reader.hpp"

@@ -1,4 +1,4 @@
-#include "cli/output_set.hpp"
+#include "io/output_set.hpp"
 
 #include <cstdio>
 #include <filesystem>
