@@ -201,6 +201,8 @@ Params Params::with_overrides(const json& override_json, const std::string& orig
   return build(layers);
 }
 
+Params Params::from_layers(const ConfigLayers& layers) { return build(layers); }
+
 Params Params::from_files(const std::vector<std::string>& paths) {
   ConfigLayers layers = ConfigLayers::builtin();
   for (const std::string& path : paths) layers.merge_file(path);

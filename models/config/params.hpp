@@ -15,6 +15,8 @@
 
 namespace girtd {
 
+class ConfigLayers;  // config/config_layers.hpp
+
 enum class OneMinusNf { kExact, kInvertBits };
 
 // The thesis appendix's validation program (docs/design.md §11): its screen and
@@ -111,6 +113,8 @@ struct Params {
   // --config FILE...: each file merged over the built-in one in order, the
   // later winning; a refused value is reported at its key's line.
   static Params from_files(const std::vector<std::string>& paths);
+  // Layers already merged (files and JSON patches in the caller's order).
+  static Params from_layers(const ConfigLayers& layers);
 
   // These parameters with the thesis program's formats in place of the
   // hardware EPs' (the DDA datapath then is the program's 32-bit registers).

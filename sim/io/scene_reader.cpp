@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <set>
@@ -118,6 +119,9 @@ class SceneReader {
     root_ = parse_json_text(text_, path);
     lines_ = std::make_unique<JsonLines>(text_);
   }
+  // A document with no text: errors name `name` and the key, line 0.
+  SceneReader(const json& document, const std::string& name, const Params& params)
+      : path_(name), params_(params), root_(document) {}
 
   Trace read() {
     const Ptr root;
@@ -346,6 +350,33 @@ class SceneReader {
     return cache[key];
   }
 
+  // {"vertices": [[x, y, z], ...], "polygons": [[i, j, k, ...], ...]}: a
+  // model given in the scene (the Python module's Scene.add_mesh).
+  std::shared_ptr<const Mesh> inline_mesh(const Ptr& ptr) const {
+    keys(at(ptr), ptr, {"vertices", "polygons"});
+    for (const char* k : {"vertices", "polygons"})
+      if (!at(ptr).contains(k) || !at(ptr / k).is_array() || at(ptr / k).empty())
+        fail(ptr, std::string("a mesh needs a non-empty list \"") + k + "\"");
+    auto m = std::make_shared<Mesh>();
+    const size_t n = at(ptr / "vertices").size();
+    if (n > size_t(std::numeric_limits<int>::max())) fail(ptr / "vertices", "too many vertices");
+    m->positions.reserve(n);
+    for (size_t i = 0; i < n; ++i) m->positions.push_back(vec3(ptr / "vertices" / i));
+    const json& polys = at(ptr / "polygons");
+    if (polys.size() > kMaxModelPolygons) fail(ptr / "polygons", "more than " + std::to_string(kMaxModelPolygons) + " polygons");
+    m->polygons.reserve(polys.size());
+    for (size_t i = 0; i < polys.size(); ++i) {
+      const Ptr pp = ptr / "polygons" / i;
+      if (!polys[i].is_array() || polys[i].size() < 3 || polys[i].size() > kMaxPolygonVertices)
+        fail(pp, key_name(pp) + " must list 3 to " + std::to_string(kMaxPolygonVertices) + " vertex indices");
+      std::vector<int> poly;
+      poly.reserve(polys[i].size());
+      for (size_t k = 0; k < polys[i].size(); ++k) poly.push_back(int(integer(pp / k, 0, int64_t(n) - 1)));
+      m->polygons.push_back(std::move(poly));
+    }
+    return m;
+  }
+
   std::vector<Instance> read_models(const std::map<std::string, Surface>& materials) {
     const Ptr ms = Ptr() / "models";
     if (!root_.contains("models")) fail(Ptr(), "the scene has no \"models\"");
@@ -355,13 +386,13 @@ class SceneReader {
     std::map<std::string, std::shared_ptr<const Mesh>> cache;
     for (size_t i = 0; i < m.size(); ++i) {
       const Ptr mp = ms / i;
-      keys(at(mp), mp, {"name", "file", "material", "crease_deg", "scale", "rotate_deg", "translate"});
+      keys(at(mp), mp, {"name", "file", "mesh", "material", "crease_deg", "scale", "rotate_deg", "translate"});
       Instance in;
       in.name = at(mp).contains("name") ? string(mp / "name") : "model" + std::to_string(i);
       for (const Instance& o : out)
         if (o.name == in.name) fail(mp / "name", "two models are named \"" + in.name + "\"");
-      if (!at(mp).contains("file")) fail(mp, "a model needs \"file\"");
-      in.mesh = mesh(mp / "file", cache);
+      if (at(mp).contains("file") == at(mp).contains("mesh")) fail(mp, "a model needs \"file\" or \"mesh\" (one of them)");
+      in.mesh = at(mp).contains("file") ? mesh(mp / "file", cache) : inline_mesh(mp / "mesh");
       in.material = SceneDefaults::material();
       if (at(mp).contains("material")) {
         const std::string name = string(mp / "material");
@@ -447,6 +478,12 @@ class SceneReader {
 
 Trace read_scene(const std::string& path, const Params& params) {
   Trace t = SceneReader(path, params).read();
+  apply_q_override(t, params);
+  return t;
+}
+
+Trace read_scene_document(const nlohmann::json& document, const std::string& name, const Params& params) {
+  Trace t = SceneReader(document, name, params).read();
   apply_q_override(t, params);
   return t;
 }

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "config/params.hpp"
 #include "frontend/vec3.hpp"
 #include "frontend/world_frame.hpp"
@@ -33,6 +35,12 @@ struct SceneDefaults {
 inline constexpr uint64_t kMaxSceneCorners = 30000000;
 
 Trace read_scene(const std::string& path, const Params& params);
+
+// A scene given as a document rather than a file (the library's
+// RenderRequest::scene): the same keys, "mesh" models included; errors name
+// `name` and the key ("NAME: \"models/0/mesh\" ..."); model paths are relative
+// to the working directory.
+Trace read_scene_document(const nlohmann::json& document, const std::string& name, const Params& params);
 
 // A bare model: auto-framed camera, default light and material, one frame.
 Trace scene_from_model(const std::string& path, const Params& params);
