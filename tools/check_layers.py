@@ -53,7 +53,7 @@ def layer_of(rel, layers):
 
 
 def sources(root):
-    for top in ("models", "sim", "hw", "testbench", "tools", "traces"):
+    for top in ("models", "sim", "hw", "python", "examples", "testbench", "tools", "traces"):
         for p in sorted((root / top).rglob("*")):
             if p.is_file() and p.suffix in CPP | SV | PY and not SKIP_PARTS & set(p.relative_to(root).parts):
                 yield p
