@@ -72,6 +72,7 @@ py::dict render(const std::string& request_json) {
   } catch (const girtd::InputError& e) {
     raise_input_error(e);
   }
+  if (r.problem) raise_input_error(*r.problem);
   py::dict out;
   out["report"] = r.report.dump();
   out["frame"] = rgb_array(r.frame);

@@ -56,3 +56,36 @@ def test_it_is_the_scene_file_it_stands_for(tmp_path):
     assert rc == 0, err
     with open(out / "report.json") as f:
         assert json.load(f)["image_sha256"] == girtd.render(s)["image_sha256"]
+
+
+def cube_scene():
+    return girtd.Scene(camera=dict(eye=[3, 2.5, 4], target=[0, 0, 0], fov_deg=40),
+                       lights=dict(ambient=0.2, directional=[dict(toward=[0.4, 1, 0.7], intensity=0.7)]))
+
+
+def test_a_mesh_with_a_vertex_per_corner_is_the_model_file_it_copies():
+    # traces/models/cube.off's faces, each with its own four corners (as
+    # trimesh or an STL export gives them): with crease_deg 180 the file's
+    # cube is shaded smooth across its edges, and so must this one be.
+    off = open(os.path.join(ROOT, "traces", "models", "cube.off")).read().split("\n")
+    rows = [l.split() for l in off if l and not l.startswith(("#", "OFF"))]
+    corners = [list(map(float, r)) for r in rows[1:9]]
+    faces = [list(map(int, r[1:])) for r in rows[9:15]]
+    vertices = np.array([corners[i] for f in faces for i in f])
+    per_corner = [[4 * k + j for j in range(4)] for k in range(len(faces))]
+    from_file, inline = cube_scene(), cube_scene()
+    from_file.add_model(os.path.join(ROOT, "traces", "models", "cube.off"), crease_deg=180)
+    inline.add_mesh(vertices, per_corner, crease_deg=180)
+    assert girtd.render(inline)["image_sha256"] == girtd.render(from_file)["image_sha256"]
+    faceted = cube_scene()
+    faceted.add_model(os.path.join(ROOT, "traces", "models", "cube.off"), crease_deg=0)
+    assert girtd.render(faceted)["image_sha256"] != girtd.render(from_file)["image_sha256"]
+
+
+def test_an_unknown_back_end_is_bad_input():
+    try:
+        girtd.render(facing_square([1, 2, 3]), backend="nonesuch")
+    except girtd.InputError as e:
+        assert e.file == "--backend" and "known: reference, golden" in e.message, str(e)
+    else:
+        raise AssertionError("rendered on a back end that does not exist")

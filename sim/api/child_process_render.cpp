@@ -45,7 +45,7 @@ std::string encode(const RenderResult& r) {
   nlohmann::json h = {{"report", r.report},          {"width", r.frame.width},
                       {"height", r.frame.height},    {"frames", r.per_frame.size()},
                       {"wave_files", r.wave_files}};
-  std::string out = h.dump() + "\n";
+  std::string out = h.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
   auto add = [&](const RgbImage& img) { out.append(reinterpret_cast<const char*>(img.rgb.data()), img.rgb.size()); };
   add(r.frame);
   out.append(reinterpret_cast<const char*>(r.z.data()), r.z.size() * sizeof(uint16_t));
@@ -56,7 +56,8 @@ std::string encode(const RenderResult& r) {
 std::string encode(const InputError& e) {
   nlohmann::json err = {{"file", e.file()}, {"line", e.line()}, {"what", e.what()}};
   if (e.offset()) err["offset"] = *e.offset();
-  return nlohmann::json{{"error", err}}.dump() + "\n";
+  // Replaced, not thrown on: a message may quote an input's non-UTF-8 bytes.
+  return nlohmann::json{{"error", err}}.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 RenderResult decode(const std::string& bytes) {
@@ -103,14 +104,21 @@ RenderResult render_in_child_process(const RenderRequest& request) {
   if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
   if (pid == 0) {  // the child: render, send, and leave without running the parent's exit handlers
     ::close(fds[0]);
+    // Nothing may leave this block but _exit: an exception would climb back
+    // into the caller (a Python interpreter) and run its script twice.
     int rc = 0;
     std::string message;
     try {
-      message = encode(render(request));
-    } catch (const InputError& e) {
-      message = encode(e);
+      try {
+        const RenderResult r = render(request);
+        message = r.problem ? encode(*r.problem) : encode(r);
+      } catch (const InputError& e) {
+        message = encode(e);
+      }
     } catch (const std::exception& e) {
       std::fprintf(stderr, "girtd: %s\n", e.what());
+      rc = 1;
+    } catch (...) {
       rc = 1;
     }
     std::fflush(stderr);

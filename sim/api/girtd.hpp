@@ -53,6 +53,10 @@ struct RenderResult {
   std::vector<RgbImage> per_frame;    // with keep_all_frames
   std::vector<std::string> wave_files;  // the waveform, its .gtkw and the pixel log
   RunStats stats;                     // what the report was made from (the HTML page's series)
+  // Bad input found at the end of a timed run (a waveform that recorded
+  // nothing): returned, not thrown, since sanitizers cannot follow an
+  // exception past SystemC's coroutine stacks (WaveFiles). The rest is empty.
+  std::optional<InputError> problem;
 };
 
 // Renders in this process. Throws InputError ("FILE:LINE: what") for bad
@@ -62,7 +66,8 @@ struct RenderResult {
 RenderResult render(const RenderRequest& request);
 
 // The same render in a forked child process, its result sent back through a
-// pipe (RenderResult::stats stays empty). InputError crosses as InputError.
+// pipe (RenderResult::stats stays empty). InputError, and a problem, cross
+// as InputError.
 RenderResult render_in_child_process(const RenderRequest& request);
 
 // True when `backend` elaborates the SystemC pipeline, which a process can do once.
@@ -75,7 +80,7 @@ nlohmann::json backend_list();
 nlohmann::json merged_config(const std::vector<ConfigLayer>& layers);
 
 // The RTL build key `layers` need, and whether this library holds that
-// elaboration (else the driver builds an RTL variant: tools/girtd variant).
+// elaboration (else `girtd render` builds an RTL variant and runs in it).
 std::string needed_rtl_key(const std::vector<ConfigLayer>& layers);
 bool holds_rtl_key(const std::string& key);
 

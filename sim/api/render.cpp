@@ -27,6 +27,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A library caller may name any back end: an unknown one is bad input.
+const BackendEntry& known_backend(const std::string& name) {
+  if (const BackendEntry* b = find_backend(name)) return *b;
+  std::string known;
+  for (const std::string& n : backend_names()) known += (known.empty() ? "" : ", ") + n;
+  throw InputError("--backend", 0, "no back end named \"" + name + "\" (known: " + known + ")");
+}
+
 DumpRequest parse_dump(const std::string& spec) {
   const size_t eq = spec.find('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == spec.size())
@@ -119,7 +127,7 @@ std::string sampling_warning(const std::string& input, const SamplingStats& m, c
 }  // namespace
 
 RenderResult render(const RenderRequest& a) {
-  const BackendEntry& entry = backend_named(a.backend);
+  const BackendEntry& entry = known_backend(a.backend);
   reject_unbuilt_options(a, entry);
   const Params params = request_params(a);
   std::optional<WaveOptions> wave;  // checked before the input is read
@@ -158,7 +166,11 @@ RenderResult render(const RenderRequest& a) {
     out = render_trace(entry, input.trace, params, opt);
     out.stats.frontend = input.frontend;
   }
-  if (out.problem) throw *out.problem;  // found at the end of the run (see WaveFiles)
+  if (out.problem) {  // found at the end of the run: not thrown (see RenderResult::problem)
+    RenderResult failed;
+    failed.problem = out.problem;
+    return failed;
+  }
 
   ReportContext ctx;
   ctx.backend = entry.name;
@@ -190,7 +202,7 @@ RenderResult render(const RenderRequest& a) {
   return r;
 }
 
-bool runs_once_per_process(const std::string& backend) { return backend_named(backend).timed(); }
+bool runs_once_per_process(const std::string& backend) { return known_backend(backend).timed(); }
 
 nlohmann::json backend_list() {
   nlohmann::json list = nlohmann::json::array();

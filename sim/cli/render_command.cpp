@@ -65,6 +65,10 @@ int run_render(const RenderArgs& a) {
   request.wave_scopes = a.wave_scopes;
   request.progress = isatty(STDERR_FILENO);
   const RenderResult out = render(request);
+  if (out.problem) {
+    std::fprintf(stderr, "%s\n", out.problem->formatted().c_str());
+    return 2;
+  }
   const nlohmann::json& report = out.report;
   const std::optional<ChartLibrary> charts = load_chart_library();
   // The machine's, not the input's: on stderr, not in report.json.

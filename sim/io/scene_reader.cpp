@@ -8,12 +8,14 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
 #include "common/file_text.hpp"
 #include "common/input_error.hpp"
 #include "common/json_text.hpp"
+#include "frontend/polygon_shape.hpp"
 #include "frontend/rotation.hpp"
 #include "frontend/surface_groups.hpp"
 #include "frontend/view_transform.hpp"
@@ -351,7 +353,10 @@ class SceneReader {
   }
 
   // {"vertices": [[x, y, z], ...], "polygons": [[i, j, k, ...], ...]}: a
-  // model given in the scene (the Python module's Scene.add_mesh).
+  // model given in the scene (the Python module's Scene.add_mesh). Built as
+  // a model file is (model_import.cpp): corners at the same position are one
+  // vertex, so a mesh with a vertex per face corner is shaded smooth alike,
+  // and a corner repeated in a polygon is dropped.
   std::shared_ptr<const Mesh> inline_mesh(const Ptr& ptr) const {
     keys(at(ptr), ptr, {"vertices", "polygons"});
     for (const char* k : {"vertices", "polygons"})
@@ -360,8 +365,14 @@ class SceneReader {
     auto m = std::make_shared<Mesh>();
     const size_t n = at(ptr / "vertices").size();
     if (n > size_t(std::numeric_limits<int>::max())) fail(ptr / "vertices", "too many vertices");
-    m->positions.reserve(n);
-    for (size_t i = 0; i < n; ++i) m->positions.push_back(vec3(ptr / "vertices" / i));
+    std::vector<int> index_of(n);
+    std::map<std::tuple<double, double, double>, int> merged;
+    for (size_t i = 0; i < n; ++i) {
+      const Vec3 p = vec3(ptr / "vertices" / i);
+      auto [it, fresh] = merged.emplace(std::make_tuple(p.x, p.y, p.z), static_cast<int>(m->positions.size()));
+      if (fresh) m->positions.push_back(p);
+      index_of[i] = it->second;
+    }
     const json& polys = at(ptr / "polygons");
     if (polys.size() > kMaxModelPolygons) fail(ptr / "polygons", "more than " + std::to_string(kMaxModelPolygons) + " polygons");
     m->polygons.reserve(polys.size());
@@ -371,9 +382,11 @@ class SceneReader {
         fail(pp, key_name(pp) + " must list 3 to " + std::to_string(kMaxPolygonVertices) + " vertex indices");
       std::vector<int> poly;
       poly.reserve(polys[i].size());
-      for (size_t k = 0; k < polys[i].size(); ++k) poly.push_back(int(integer(pp / k, 0, int64_t(n) - 1)));
-      m->polygons.push_back(std::move(poly));
+      for (size_t k = 0; k < polys[i].size(); ++k) poly.push_back(index_of[size_t(integer(pp / k, 0, int64_t(n) - 1))]);
+      drop_repeated_corners(poly, [](int a, int b) { return a == b; });
+      if (poly.size() >= 3) m->polygons.push_back(std::move(poly));
     }
+    if (m->polygons.empty()) fail(ptr / "polygons", "the mesh has no polygon with three distinct corners");
     return m;
   }
 
