@@ -4,7 +4,8 @@
     tools/girtd python examples/sweep_fifo_depth.py [--out DIR] [--knob fifo.dda_had_depth] [--values 1,2,4,8,16,32]
 
 Each point renders every scene in traces/scenes on the approx back end with
-the knob set, and reads the sustained rate from the report. The plot and a
+the knob set, and reads the rate from the report: the sustained rate of an
+animation (several frames), the modeled rate of a single frame. The plot and a
 CSV go to DIR (default out/examples). Copy it and change the knob.
 """
 import argparse

@@ -17,6 +17,8 @@ import subprocess
 import sys
 import tempfile
 
+import operator
+
 import numpy as np
 
 from . import _girtd
@@ -71,9 +73,24 @@ def _layers(config):
     return layers
 
 
+def _json(value, sort_keys=False):
+    """JSON for the library: numpy arrays and scalars as lists and numbers;
+    NaN and infinity refused here (JSON has no spelling for them)."""
+    def plain(o):
+        if isinstance(o, np.ndarray):
+            return o.tolist()
+        if isinstance(o, np.generic):
+            return o.item()
+        raise TypeError("%r is not a JSON value" % (o,))
+    try:
+        return json.dumps(value, allow_nan=False, default=plain, sort_keys=sort_keys)
+    except ValueError:
+        raise ValueError("a configuration or scene value is NaN or infinite") from None
+
+
 def merged_config(config=None):
     """The configuration a render with `config` runs with (config/girtd.json merged with it)."""
-    return json.loads(_girtd.merged_config(json.dumps(_layers(config))))
+    return json.loads(_girtd.merged_config(_json(_layers(config))))
 
 
 def render(input, backend="golden", config=None, repeat=1, frames="last", level=None, prune=True, aa=None,
@@ -100,13 +117,13 @@ def render(input, backend="golden", config=None, repeat=1, frames="last", level=
             request[key] = value
     if _needs_rtl_variant(backend, request["config"]):
         return _render_with_executable(request)
-    out = _girtd.render(json.dumps(request))
+    out = _girtd.render(_json(request))
     return Report(json.loads(out["report"]), out["frame"], out["z"], out["frames"])
 
 
 def _needs_rtl_variant(backend, layers):
     entry = next((b for b in backends() if b["name"] == backend), None)
-    return entry is not None and entry["runs_rtl"] and _girtd.needs_rtl_variant(json.dumps(layers))
+    return entry is not None and entry["runs_rtl"] and _girtd.needs_rtl_variant(_json(layers))
 
 
 def _render_with_executable(request):
@@ -136,7 +153,7 @@ def _render_with_executable(request):
             args.append("--no-prune")
         done = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
         if done.returncode == 2:  # bad input: the CLI's one line
-            line = done.stderr.strip().splitlines()[-1]
+            line = (done.stderr.strip().splitlines() or ["girtd render: exit 2 without a message"])[-1]
             file, _, rest = line.partition(":")
             number, _, message = rest.partition(": ")
             raise InputError(line, file, int(number) if number.isdigit() else 0,
@@ -148,7 +165,7 @@ def _render_with_executable(request):
         out = os.path.join(tmp, "out")
         with open(os.path.join(out, "report.json")) as f:
             report = json.load(f)
-        frames = sorted(n for n in os.listdir(out) if n.startswith("frame_"))
+        frames = sorted((n for n in os.listdir(out) if n.startswith("frame_")), key=lambda n: int(n[6:-4]))
         return Report(report, _girtd.read_png_rgb(os.path.join(out, "frame.png")),
                       _girtd.read_png_gray16(os.path.join(out, "z.png")),
                       [_girtd.read_png_rgb(os.path.join(out, n)) for n in frames])
@@ -191,7 +208,7 @@ class Scene:
     def _material(self, material):
         if material is None:
             return None
-        key = json.dumps(material, sort_keys=True)
+        key = _json(material, sort_keys=True)
         if key not in self._materials:
             self._materials[key] = ("material%d" % len(self._materials), material)
         return self._materials[key][0]
@@ -218,7 +235,10 @@ class Scene:
         v = np.asarray(vertices, dtype=float)
         if v.ndim != 2 or v.shape[1] != 3:
             raise ValueError("add_mesh: vertices must be an (N, 3) array, got shape %r" % (v.shape,))
-        mesh = {"vertices": v.tolist(), "polygons": [[int(i) for i in p] for p in polygons]}
+        if not np.all(np.isfinite(v)):
+            raise ValueError("add_mesh: a vertex coordinate is NaN or infinite")
+        # operator.index: an index 1.7 is an error, not vertex 1.
+        mesh = {"vertices": v.tolist(), "polygons": [[operator.index(i) for i in p] for p in polygons]}
         model = {"mesh": mesh}
         if crease_deg is not None:
             model["crease_deg"] = crease_deg
@@ -233,9 +253,9 @@ class Scene:
         return self._add(model, material, name, dict(scale=scale, rotate_deg=rotate_deg, translate=translate))
 
     def document(self):
-        """The scene as a scene file's JSON document."""
+        """The scene as a scene file's JSON document (plain Python values: json.dump writes it)."""
         doc = dict(self._doc)
         if self._materials:
             doc["materials"] = {name: m for name, m in self._materials.values()}
         doc["models"] = list(self._models)
-        return doc
+        return json.loads(_json(doc))

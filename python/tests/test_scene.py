@@ -89,3 +89,23 @@ def test_an_unknown_back_end_is_bad_input():
         assert e.file == "--backend" and "known: reference, golden" in e.message, str(e)
     else:
         raise AssertionError("rendered on a back end that does not exist")
+
+
+def test_numpy_values_are_taken_and_non_finite_ones_refused():
+    s = girtd.Scene(camera=dict(eye=np.array([0.0, 0.0, 5.0]), target=[0, 0, 0], fov_deg=np.float32(40)),
+                    lights=dict(ambient=np.float64(1.0), directional=[]), background=[0, 0, 0])
+    s.add_mesh(np.array(SQUARE, dtype=float), np.array([[0, 1, 2, 3]]), material=dict(colour=np.array([200, 100, 50])))
+    assert girtd.render(s)["image_sha256"] == girtd.render(facing_square([200, 100, 50]))["image_sha256"]
+    for bad in (np.nan, np.inf):
+        try:
+            facing_square([1, 2, 3]).add_mesh(np.array([[0, 0, bad], [1, 0, 0], [0, 1, 0]]), [[0, 1, 2]])
+        except ValueError as e:
+            assert "NaN or infinite" in str(e)
+        else:
+            raise AssertionError("a vertex at %r was taken" % bad)
+    try:
+        facing_square([1, 2, 3]).add_mesh(np.array(SQUARE, dtype=float), [[0, 1, 2.5]])
+    except TypeError:
+        pass
+    else:
+        raise AssertionError("a fractional vertex index was taken")

@@ -1,7 +1,7 @@
 // The simulator as a library: load an input or take a scene document, merge
 // configurations, render on one back end, get the report, the frame, the Z
 // plane and the series. `girtd render` and the Python module (python/) are
-// clients of this header; docs/interface.md "The library" says how to link it.
+// clients of this header; docs/python.md "C++" says how to link it.
 #pragma once
 
 #include <cstdint>
