@@ -99,14 +99,15 @@ def render(input, backend="golden", config=None, repeat=1, frames="last", level=
 
     The options are `girtd render`'s: frames "last" or "all" (Report.frames),
     level for a trace without a header, prune=False for --no-prune, aa for
-    --aa, sample_timing, dump "LEVEL=FILE". Warnings are printed on stderr
-    as found unless print_warnings=False; the report's "warnings" keeps them.
+    --aa, sample_timing, dump "LEVEL=FILE". The report's "warnings" are
+    printed on sys.stderr after the render (a notebook shows them) unless
+    print_warnings=False.
     """
     if frames not in ("last", "all"):
         raise ValueError("frames: 'last' or 'all'")
     request = {"backend": backend, "config": _layers(config), "repeat": int(repeat),
                "keep_all_frames": frames == "all", "prune": bool(prune), "progress": bool(progress),
-               "print_warnings": bool(print_warnings)}
+               "print_warnings": False}  # printed here, through sys.stderr
     if isinstance(input, Scene):
         request["input"] = input.name
         request["scene"] = input.document()
@@ -116,9 +117,13 @@ def render(input, backend="golden", config=None, repeat=1, frames="last", level=
         if value is not None:
             request[key] = value
     if _needs_rtl_variant(backend, request["config"]):
-        return _render_with_executable(request)
-    out = _girtd.render(_json(request))
-    return Report(json.loads(out["report"]), out["frame"], out["z"], out["frames"])
+        report = _render_with_executable(request)
+    else:
+        out = _girtd.render(_json(request))
+        report = Report(json.loads(out["report"]), out["frame"], out["z"], out["frames"])
+    if print_warnings:
+        sys.stderr.writelines("warning: %s\n" % w for w in report["warnings"])
+    return report
 
 
 def _needs_rtl_variant(backend, layers):
@@ -160,8 +165,6 @@ def _render_with_executable(request):
                              message if number.isdigit() else rest.strip())
         if done.returncode != 0:
             raise RuntimeError("girtd render failed (exit %d):\n%s" % (done.returncode, done.stderr))
-        if request["print_warnings"]:
-            sys.stderr.writelines(l + "\n" for l in done.stderr.splitlines() if l.startswith("warning: "))
         out = os.path.join(tmp, "out")
         with open(os.path.join(out, "report.json")) as f:
             report = json.load(f)

@@ -42,3 +42,13 @@ def test_a_polygon_index_out_of_range():
     with pytest.raises(girtd.InputError) as caught:
         girtd.render(s)
     assert caught.value.file == "<scene>" and '"models/0/mesh/polygons/0/2"' in caught.value.message
+
+
+def test_an_error_in_a_scene_built_in_python_names_its_key():
+    # A document has no lines: the message says which key, even where the
+    # scene file's message leaves it to the line number.
+    s = girtd.Scene(lights=dict(ambient=0.2, directional=[dict(intensity=0.5)]))  # no "toward"
+    s.add_mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+    with pytest.raises(girtd.InputError) as caught:
+        girtd.render(s)
+    assert caught.value.line == 0 and '"lights/directional/0"' in caught.value.message, str(caught.value)

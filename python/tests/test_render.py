@@ -70,3 +70,12 @@ def test_backends_read_the_registry():
     assert [n for n, b in by_name.items() if b["timed"]] == ["approx", "rtl"]
     assert by_name["rtl"]["records_waveforms"] and not by_name["golden"]["records_waveforms"]
     assert not by_name["reference"]["has_dda"] and by_name["golden"]["has_dda"]
+
+
+def test_warnings_go_through_sys_stderr(capsys):
+    # Through Python's own stream (a notebook shows it), each once, as the report lists them.
+    r = girtd.render(os.path.join(ROOT, "traces", "scenes", "near_clip.json"))
+    assert r["warnings"] and any("clamped" in w for w in r["warnings"])
+    assert capsys.readouterr().err == "".join("warning: %s\n" % w for w in r["warnings"])
+    girtd.render(os.path.join(ROOT, "traces", "scenes", "near_clip.json"), print_warnings=False)
+    assert capsys.readouterr().err == ""

@@ -210,7 +210,12 @@ class SceneReader {
 
  private:
   int line(const Ptr& ptr) const { return lines_ ? lines_->line(ptr.to_string()) : 0; }
-  [[noreturn]] void fail(const Ptr& ptr, const std::string& what) const { throw InputError(path_, line(ptr), what); }
+  [[noreturn]] void fail(const Ptr& ptr, const std::string& what) const {
+    // A document (a Python Scene) has no lines: the key's path says where.
+    if (!lines_ && !ptr.empty() && what.find(key_name(ptr)) == std::string::npos)
+      throw InputError(path_, 0, key_name(ptr) + ": " + what);
+    throw InputError(path_, line(ptr), what);
+  }
 
   // "scene", or the key's path in quotes ("materials/glass/n"), names unescaped.
   static std::string key_name(Ptr ptr) {
