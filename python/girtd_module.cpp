@@ -97,6 +97,8 @@ auto checked(F f) {
 
 PYBIND11_MODULE(_girtd, m) {
   m.doc() = "GIRTD-sim's library (sim/api/girtd.hpp); import girtd, not this";
+  // Where the driver is (tools/girtd): a render that needs an RTL variant runs through it.
+  m.attr("source_dir") = GIRTD_SOURCE_DIR;
   m.def("render", &render, "render a request (JSON text): report JSON text, frame, z, frames");
   m.def("backends", [] { return girtd::backend_list().dump(); });
   m.def("merged_config", [](const std::string& layers) {

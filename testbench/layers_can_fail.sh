@@ -12,7 +12,7 @@ set -euo pipefail
 repo="$1"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-(cd "$repo" && tar cf - --exclude='*.png' models sim hw python examples testbench tools traces docs) |
+(cd "$repo" && tar cf - --exclude='*.png' models sim hw python examples studies testbench tools traces docs) |
   (cd "$tmp" && tar xf -)
 python3 "$repo/tools/check_layers.py" "$tmp" >/dev/null || { echo "FAIL: the unmodified copy does not pass"; exit 1; }
 

@@ -9,7 +9,7 @@ it. What is checked:
     then models/; elsewhere its own folder, then sim/, then models/), so
     "dda/x.hpp" names the file it is;
   - SystemVerilog: a module instantiated from another folder's file;
-  - Python (tools/): `import NAME` of a script beside it;
+  - Python (tools/, studies/): `import NAME` of a script beside it;
   - models/ includes only models/, the headers generated from config/
     (girtd/...), the C++ library, nlohmann-json and GLM: the golden model
     runs without SystemC, Verilator or the simulator's I/O.
@@ -53,7 +53,7 @@ def layer_of(rel, layers):
 
 
 def sources(root):
-    for top in ("models", "sim", "hw", "python", "examples", "testbench", "tools", "traces"):
+    for top in ("models", "sim", "hw", "python", "examples", "studies", "testbench", "tools", "traces"):
         for p in sorted((root / top).rglob("*")):
             if p.is_file() and p.suffix in CPP | SV | PY and not SKIP_PARTS & set(p.relative_to(root).parts):
                 yield p

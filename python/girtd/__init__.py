@@ -26,9 +26,10 @@ from . import _girtd
 __all__ = ["render", "backends", "merged_config", "Scene", "Report", "InputError"]
 
 # The girtd executable of the build this module belongs to (build/python/girtd
-# -> build/bin/girtd): renders that need an RTL variant run through it, as
-# `tools/girtd render` does.
+# -> build/bin/girtd) and the driver: a render that needs an RTL variant runs
+# as `tools/girtd render` on that executable, whose variant step builds it.
 _EXECUTABLE = os.path.join(os.path.dirname(__file__), "..", "..", "bin", "girtd")
+_DRIVER = os.path.join(_girtd.source_dir, "tools", "girtd")
 
 
 class InputError(Exception):
@@ -133,9 +134,10 @@ def _needs_rtl_variant(backend, layers):
 
 def _render_with_executable(request):
     """A render whose configuration needs an RTL elaborated for other widths or
-    depths: `girtd render` builds that variant once and runs in it."""
+    depths: the driver builds that variant once (its variant step) and
+    `girtd render` runs in it."""
     with tempfile.TemporaryDirectory(prefix="girtd_") as tmp:
-        args = [_EXECUTABLE, "render", request["input"], "--backend", request["backend"], "--out",
+        args = [_DRIVER, "render", request["input"], "--backend", request["backend"], "--out",
                 os.path.join(tmp, "out"), "--quiet", "--z-png", "--repeat", str(request["repeat"]),
                 "--frames", "all" if request["keep_all_frames"] else "last"]
         if "scene" in request:
@@ -156,7 +158,8 @@ def _render_with_executable(request):
                 args += [flag, str(request[key])]
         if not request["prune"]:
             args.append("--no-prune")
-        done = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        env = dict(os.environ, GIRTD_BINARY=os.path.abspath(_EXECUTABLE))
+        done = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)
         if done.returncode == 2:  # bad input: the CLI's one line
             line = (done.stderr.strip().splitlines() or ["girtd render: exit 2 without a message"])[-1]
             file, _, rest = line.partition(":")

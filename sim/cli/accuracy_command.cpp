@@ -2,6 +2,7 @@
 // variant x level is a `girtd render` in its own process; the reference
 // back end's frame is each row's picture yardstick, Mesa llvmpipe a second
 // one for opaque Q = 0 triangle-level inputs, rtl each row's timing one.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,12 +17,12 @@
 #include "accuracy/llvmpipe_render.hpp"
 #include "claims/ep_precision.hpp"
 #include "cli/child_render.hpp"
+#include "rtl/rtl_variants.hpp"
 #include "cli/commands.hpp"
 #include "io/output_set.hpp"
 #include "common/input_error.hpp"
 #include "io/image_compare.hpp"
 #include "io/png_io.hpp"
-#include "io/subprocess.hpp"
 #include "io/input_reader.hpp"
 #include "io/trace_reader.hpp"
 #include "io/workload_list.hpp"
@@ -133,14 +134,54 @@ std::string slug(const std::string& s) {
   return out;
 }
 
+std::vector<AccuracyLevel> chosen_levels(const AccuracyArgs& a) {
+  const std::string& exact = backend_with(kExactPicture).name;
+  std::vector<AccuracyLevel> levels = {accuracy_level(exact, backend_registry())};  // the picture yardstick, run first
+  for (const std::string& name : a.levels.empty() ? default_accuracy_levels(backend_registry()) : a.levels)
+    if (name != exact) levels.push_back(accuracy_level(name, backend_registry()));
+  return levels;
+}
+
+// A variant's configuration files: the run's, and its override written
+// under DIR/configs/ (the base variant has none).
+ConfigFiles variant_config(const AccuracyArgs& a, const ConfigVariant& variant) {
+  ConfigFiles config = a.config;
+  if (variant.label != "base") {
+    const fs::path file = fs::path(a.out_dir) / "configs" / (slug(variant.label) + ".json");
+    fs::create_directories(file.parent_path());
+    std::ofstream(file) << variant.override_json().dump(2) << "\n";
+    config.push_back(file.string());
+  }
+  return config;
+}
+
 }  // namespace
+
+std::vector<std::string> plan_accuracy(const AccuracyArgs& a) {
+  std::vector<std::string> lines;
+  bool runs_rtl = false;
+  for (const AccuracyLevel& level : chosen_levels(a)) runs_rtl |= backend_named(level.backend).has(kRunsRtl);
+  if (runs_rtl)
+    for (const ConfigVariant& variant : config_variants(a.vary)) {
+      std::optional<Params> params;
+      try {
+        params = load_params(variant_config(a, variant));
+      } catch (const InputError&) {
+        continue;  // an invalid variant is a row, not a run
+      }
+      if (const auto v = needed_rtl_variant(*params)) {
+        const std::string line = rtl_variant_plan_line(*v, *params);
+        if (std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
+      }
+    }
+  lines.push_back("plots\t" + a.out_dir);
+  return lines;
+}
 
 int run_accuracy(const AccuracyArgs& a) {
   const std::vector<std::string> inputs = a.inputs.empty() ? read_input_list(kDefaultInputs) : a.inputs;
   const std::string& exact = backend_with(kExactPicture).name, &yardstick = backend_with(kExactTiming).name;
-  std::vector<AccuracyLevel> levels = {accuracy_level(exact, backend_registry())};  // the picture yardstick, run first
-  for (const std::string& name : a.levels.empty() ? default_accuracy_levels(backend_registry()) : a.levels)
-    if (name != exact) levels.push_back(accuracy_level(name, backend_registry()));
+  const std::vector<AccuracyLevel> levels = chosen_levels(a);
   const std::vector<ConfigVariant> variants = config_variants(a.vary);
   // Bad usage and bad input are found before anything runs or is written.
   const Params base_params = load_params(a.config);
@@ -154,14 +195,8 @@ int run_accuracy(const AccuracyArgs& a) {
   size_t done = 0;
   const auto t0 = std::chrono::steady_clock::now();
   for (const ConfigVariant& variant : variants) {
-    ConfigFiles config = a.config;
+    const ConfigFiles config = variant_config(a, variant);
     std::optional<std::string> invalid;
-    if (variant.label != "base") {
-      const fs::path file = fs::path(a.out_dir) / "configs" / (slug(variant.label) + ".json");
-      fs::create_directories(file.parent_path());
-      std::ofstream(file) << variant.override_json().dump(2) << "\n";
-      config.push_back(file.string());
-    }
     std::optional<Params> params;
     try {
       params = load_params(config);
@@ -272,15 +307,7 @@ int run_accuracy(const AccuracyArgs& a) {
   files.add_text("accuracy.html", accuracy_html(command, rows, level_table, charts));
   files.commit();
   std::fputs(md.c_str(), stdout);
-  // The plots (tools/accuracy_plots.py): Debian's python, whose matplotlib
-  // tools/girtd installs (a python3 earlier on PATH may not have it).
-  const int plot = run_process({"/usr/bin/python3", std::string(GIRTD_SOURCE_DIR) + "/tools/accuracy_plots.py", a.out_dir}, false);
-  std::printf("wrote %s, accuracy.csv, accuracy.md, accuracy.html%s\n", files.path("accuracy.json").c_str(),
-              plot == 0 ? " and the plots" : "");
-  if (plot != 0) {
-    std::fprintf(stderr, "girtd accuracy: the plots failed (python3-matplotlib; tools/girtd installs it)\n");
-    return 1;
-  }
+  std::printf("wrote %s, accuracy.csv, accuracy.md, accuracy.html\n", files.path("accuracy.json").c_str());
   int failed = 0;
   for (const json& r : rows) failed += r.contains("invalid") && r["invalid"].get<std::string>().rfind("the render failed", 0) == 0;
   for (const json& a : agreement) failed += a["agrees"] == false;

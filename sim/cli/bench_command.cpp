@@ -35,7 +35,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// When and where: the READMEs quote bench.json (tools/bench_summary.py).
+// When and where: the READMEs quote bench.json (studies/bench_summary.py).
 nlohmann::json measured_on() {
   char date[32];
   const std::time_t now = std::time(nullptr);

@@ -73,15 +73,20 @@ struct AccuracyArgs {
 };
 
 int run_accuracy(const AccuracyArgs& a);
+// `girtd --plan accuracy ...`: the RTL variants its levels need, then "plots DIR".
+std::vector<std::string> plan_accuracy(const AccuracyArgs& a);
 
 struct SweepArgs {
   std::string spec;
   int jobs = 0;          // 0: every core
   std::string out_dir;   // default out/sweep/<spec name>
-  bool slurm = false;    // the rows as a Slurm job array
+  bool slurm = false;    // the rows as a Slurm job array (planned here, submitted by the driver)
   std::string slice;     // "I/S": only rows I, I + S, ... (a Slurm array task); no tables
 };
 
 int run_sweep(const SweepArgs& a);
+// `girtd --plan sweep ...`: the points' synthesis requests and RTL variants,
+// the Slurm array (with --slurm), then "plots DIR".
+std::vector<std::string> plan_sweep(const SweepArgs& a);
 
 }  // namespace girtd

@@ -8,7 +8,6 @@
 #include "accuracy/llvmpipe_render.hpp"
 #include "cli/bench_stats.hpp"
 #include "cli/child_render.hpp"
-#include "io/subprocess.hpp"
 #include "io/trace_reader.hpp"
 
 namespace girtd {
@@ -20,7 +19,13 @@ constexpr int kRuns = 7;
 constexpr int kTriangles = 20000;
 constexpr double kWithin = 2.0;  // golden at most this many times llvmpipe's time
 
+std::string workload_path(const std::string& out_dir) { return out_dir + "/golden_speed/opaque_20000.trace"; }
+
 }  // namespace
+
+std::string golden_speed_bench_plan_line(const std::string& out_dir) {
+  return "opaque-trace\t" + std::to_string(kTriangles) + "\t" + workload_path(out_dir);
+}
 
 GoldenSpeedBench run_golden_speed_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir) {
   GoldenSpeedBench b;
@@ -42,9 +47,11 @@ GoldenSpeedBench run_golden_speed_bench(const Params& params, const ConfigFiles&
     b.markdown += "| " + what + " |\n";
     return b;
   };
-  const std::string trace = dir + "/opaque_20000.trace";
-  if (run_process({"python3", "tools/make_opaque_trace.py", std::to_string(kTriangles), "--out", trace}, false) != 0)
-    return fail("the workload could not be made (tools/make_opaque_trace.py)");
+  // Made by the driver (tools/girtd's step for golden_speed_bench_plan_line).
+  const std::string trace = workload_path(out_dir);
+  if (!fs::exists(trace))
+    return fail("the workload " + trace + " is not there: tools/girtd bench --speed makes it first "
+                "(tools/make_opaque_trace.py " + std::to_string(kTriangles) + ")");
   std::vector<Triangle> triangles;
   Rgb background;
   try {

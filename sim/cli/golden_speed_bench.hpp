@@ -23,6 +23,10 @@ struct GoldenSpeedBench {
   int failures = 0;  // the workload, a render or llvmpipe failed
 };
 
+// The `girtd --plan` line asking the driver for the workload, a trace made
+// by tools/make_opaque_trace.py under out_dir.
+std::string golden_speed_bench_plan_line(const std::string& out_dir);
+
 GoldenSpeedBench run_golden_speed_bench(const Params& params, const ConfigFiles& config, const std::string& out_dir);
 
 }  // namespace girtd

@@ -9,6 +9,7 @@
 #include "accuracy/accuracy_levels.hpp"
 #include "engine/backend_registry.hpp"
 #include "cli/commands.hpp"
+#include "cli/golden_speed_bench.hpp"
 #include "common/input_error.hpp"
 #include "rtl/rtl_variants.hpp"
 #include "stress/stress_cases.hpp"
@@ -23,6 +24,11 @@ int main(int argc, char** argv) {
   setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);  // before SystemC starts
   CLI::App app{"GIRTD-sim: cycle-approximate simulator of the GIRTD 3D image generator (1988)"};
   app.require_subcommand(1);
+  bool plan = false;
+  app.add_flag("--plan", plan,
+               "print what must exist before the command runs (RTL variants, synthesised sizes, a workload, a Slurm "
+               "array, plots to draw after), one tab-separated line each, and exit: the driver tools/girtd makes them")
+      ->group("");
 
   RenderArgs ra;
   CLI::App* render = app.add_subcommand("render", "render a model (OBJ, PLY, STL, OFF ...), a scene (JSON) or a trace");
@@ -142,7 +148,8 @@ int main(int argc, char** argv) {
   sweep->add_option("--jobs", sw.jobs, "renders at once (default: every core); with --slurm, array tasks (default 64)")
       ->check(CLI::PositiveNumber);
   sweep->add_option("--out", sw.out_dir, "output directory (default out/sweep/<spec name>; a rerun resumes there)");
-  sweep->add_flag("--slurm", sw.slurm, "run the rows as a Slurm job array (sbatch --array --wait), then gather");
+  sweep->add_flag("--slurm", sw.slurm,
+                  "run the rows as a Slurm job array, then gather (submitted by the driver: tools/girtd sweep ... --slurm)");
   sweep->add_option("--slice", sw.slice, "I/S: run rows I, I + S, ... only, and no tables (what each Slurm task runs)")
       ->group("");
 
@@ -157,16 +164,28 @@ int main(int argc, char** argv) {
 
   try {
     // A configuration the built RTL is not elaborated for runs in an RTL
-    // variant (render on rtl; regress, bench and claims drive the RTL too).
-    // A render whose input is missing fails at once, before any build.
+    // variant (render on rtl; regress, bench, claims and stress drive the RTL
+    // too). A render whose input is missing fails at once, before any build.
     const bool drives_rtl =
         (*render && backend_named(ra.backend).has(kRunsRtl) && std::filesystem::exists(ra.input)) || *regress || *bench || *claims ||
-        *stress;  // stress: the variant is built here, not inside a render's timeout
+        *stress;
     const ConfigFiles& config = *render ? ra.config
                                 : *regress ? rg.config
                                 : *bench   ? ba.config
                                 : *stress  ? st.config
                                            : claims_config;
+    if (plan) {
+      std::vector<std::string> lines;
+      if (drives_rtl) {
+        const Params p = load_params(config);
+        if (const auto v = needed_rtl_variant(p)) lines.push_back(rtl_variant_plan_line(*v, p));
+      }
+      if (*bench && ba.speed_only) lines.push_back(golden_speed_bench_plan_line(ba.out));
+      if (*accuracy) lines = plan_accuracy(ac);
+      if (*sweep) lines = plan_sweep(sw);
+      for (const std::string& line : lines) std::printf("%s\n", line.c_str());
+      return 0;
+    }
     if (drives_rtl) run_in_rtl_variant_if_needed(load_params(config), argv);
     if (*render) return run_render(ra);
     if (*claims) return run_claims(claims_config, claims_campaign);

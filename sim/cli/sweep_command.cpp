@@ -1,9 +1,10 @@
 // girtd sweep: a design-space sweep (docs/interface.md). Every point x input is a
 // `girtd render` in its own process, run by a pool of local workers (or, with
-// --slurm, a Slurm job array running `girtd sweep --slice I/S`); each row is kept
-// in DIR/rows/ as it completes, so a rerun skips what is there and a killed
-// sweep resumes. Then K points chosen from the spec's hash are rerun on rtl
-// and the tables and plots are written.
+// the driver's --slurm, a Slurm job array running `girtd sweep --slice I/S`);
+// each row is kept in DIR/rows/ as it completes, so a rerun skips what is
+// there and a killed sweep resumes. Then K points chosen from the spec's hash
+// are rerun on rtl and the tables are written. What must exist first (RTL
+// variants, the DDA's synthesised sizes, the array) plan_sweep tells the driver.
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
@@ -36,7 +37,8 @@
 #include "engine/backend_registry.hpp"
 #include "io/sweep_spec.hpp"
 #include "sweep/sweep_table.hpp"
-#include "sweep/yosys_cells.hpp"
+#include "sweep/dda_cells.hpp"
+#include "rtl/rtl_variants.hpp"
 #include "report/sweep_page.hpp"
 
 namespace girtd {
@@ -176,87 +178,110 @@ void spot_check(const Task& t, json& row, const SweepSpec& spec, const fs::path&
 }
 
 
-bool slurm_available() { return run_process({"sinfo", "--noheader"}, true) == 0; }
+// What a sweep is made of, read and checked before anything runs.
+struct SweepSetup {
+  SweepSpec spec;
+  Params base;
+  std::string out;
+  std::vector<SweepPoint> points;
+  std::vector<Task> tasks;
+  std::vector<size_t> todo;  // this slice's tasks without a row yet
+  int lock = -1;             // held while this process gathers in `out`
+};
 
-// One array task per slice, each `girtd sweep SPEC --out DIR --slice I/S`
-// with one job (a task is one core); sbatch --wait returns when all ended.
-int run_slurm_array(const SweepArgs& a, const std::string& out, size_t rows) {
-  const size_t slices = std::min<size_t>(rows, a.jobs > 0 ? size_t(a.jobs) : 64);
-  const std::string logs = out + "/slurm";
-  fs::create_directories(logs);
-  const std::string self = self_executable();
-  // The spec and folder as given, run from this folder (--chdir): the rows
-  // name their inputs as a local run does.
-  const std::string wrap = "exec '" + self + "' sweep '" + a.spec + "' --out '" + out +
-                           "' --jobs 1 --slice $SLURM_ARRAY_TASK_ID/" + std::to_string(slices);
-  std::printf("submitting %zu array task(s) to Slurm (logs in %s)\n", slices, logs.c_str());
-  std::fflush(stdout);
-  return run_process({"sbatch", "--wait", "--quiet", "--array=0-" + std::to_string(slices - 1),
-                      "--job-name=girtd-sweep", "--output=" + fs::absolute(logs).string() + "/%a.log",
-                      "--chdir=" + fs::current_path().string(), "--wrap=" + wrap},
-                     false);
+std::vector<std::string> timed_backends() {
+  std::vector<std::string> timed;
+  for (const BackendEntry& b : backend_registry())
+    if (b.timed()) timed.push_back(b.name);
+  return timed;
+}
+
+// Every input is read before anything runs (bad input: exit 2, nothing
+// written); "repeat" draws one-frame inputs that many times, and an
+// animation as it is. `warn`: say so (once: not again when planning).
+SweepSetup prepare_sweep(const SweepArgs& a, size_t slice, size_t slices, bool warn) {
+  SweepSetup s{read_sweep_spec(a.spec, timed_backends()), Params{}, "", {}, {}, {}, -1};
+  std::map<std::string, bool> repeat;
+  s.base = Params::from_files(s.spec.base);
+  for (const std::string& input : s.spec.inputs) {
+    const size_t frames = read_input(input, std::nullopt, s.base).frames.size();
+    repeat[input] = s.spec.repeat > 1 && frames == 1;
+    if (s.spec.repeat > 1 && frames > 1 && warn)
+      std::fprintf(stderr, "warning: %s: %zu frames: \"repeat\" draws one-frame inputs; this one runs as it is\n",
+                   input.c_str(), frames);
+  }
+  s.out = a.out_dir.empty() ? "out/sweep/" + fs::path(a.spec).stem().string() : a.out_dir;
+  check_output_dir(s.out, "--out");
+  const fs::path dir(s.out);
+  fs::create_directories(dir / "rows");
+  // One gathering sweep per folder at a time (its Slurm tasks excepted).
+  s.lock = a.slice.empty() ? open((dir / ".lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644) : -1;
+  if (s.lock >= 0 && flock(s.lock, LOCK_EX | LOCK_NB) != 0)
+    throw InputError("--out", 0, "another girtd sweep is running in " + s.out);
+  s.points = sweep_points(s.spec, s.out);
+  std::set<std::string> ids;  // two combinations can merge to one design: it runs once
+  for (const SweepPoint& p : s.points)
+    for (const std::string& input : s.spec.inputs) {
+      const std::string id = p.id + "-" + row_tag(input, s.spec, repeat[input]);
+      if (ids.insert(id).second) s.tasks.push_back({&p, input, id, repeat[input]});
+    }
+  for (size_t i = slice; i < s.tasks.size(); i += slices)
+    if (!fs::exists(dir / "rows" / (s.tasks[i].id + ".json"))) s.todo.push_back(i);
+  return s;
+}
+
+Params point_params(const SweepSpec& spec, const SweepPoint& p) {
+  ConfigFiles files = spec.base;
+  files.push_back(p.config_file);
+  return Params::from_files(files);
 }
 
 }  // namespace
 
+std::vector<std::string> plan_sweep(const SweepArgs& a) {
+  const SweepSetup s = prepare_sweep(a, 0, 1, false);
+  std::vector<std::string> lines;
+  std::set<std::string> seen;
+  auto add = [&](const std::string& line) {
+    if (seen.insert(line).second) lines.push_back(line);
+  };
+  const std::string points_dir = (fs::path(s.out) / "points").string();
+  const bool all_on_rtl = backend_named(s.spec.backend).has(kRunsRtl);
+  std::set<const SweepPoint*> on_rtl;
+  if (!all_on_rtl && s.spec.spot_check > 0 && !backend_named(s.spec.backend).has(kExactTiming))
+    for (const SweepPoint* p : spot_check_points(s.spec, s.points)) on_rtl.insert(p);
+  for (const SweepPoint& p : s.points) {
+    if (!p.invalid.empty()) continue;
+    const Params params = point_params(s.spec, p);
+    if (const auto request = dda_cells_request(params, points_dir)) add("dda-cells\t" + *request);
+    if (all_on_rtl || on_rtl.count(&p))
+      if (const auto v = needed_rtl_variant(params)) add(rtl_variant_plan_line(*v, params));
+  }
+  if (a.slurm && !s.todo.empty()) {
+    const size_t slices = std::min<size_t>(s.todo.size(), a.jobs > 0 ? size_t(a.jobs) : 64);
+    add("slurm-array\t" + std::to_string(slices) + "\t" + a.spec + "\t" + s.out);
+  }
+  add("plots\t" + s.out);
+  return lines;
+}
+
 int run_sweep(const SweepArgs& a) {
-  std::vector<std::string> timed;
-  for (const BackendEntry& b : backend_registry())
-    if (b.timed()) timed.push_back(b.name);
-  const SweepSpec spec = read_sweep_spec(a.spec, timed);
+  if (a.slurm)
+    throw InputError("--slurm", 0, "the driver submits the Slurm array: run tools/girtd sweep " + a.spec + " --slurm");
   size_t slice = 0, slices = 1;
   if (!a.slice.empty() && std::sscanf(a.slice.c_str(), "%zu/%zu", &slice, &slices) != 2)
     throw InputError("--slice", 0, "expected I/S, got '" + a.slice + "'");
   if (slices == 0 || slice >= slices) throw InputError("--slice", 0, "I must lie in 0 .. S - 1");
-  if (a.slurm && !slurm_available())
-    throw InputError("--slurm", 0, "Slurm is not there (no sbatch, or no controller answers): tools/girtd slurm-up "
-                                   "starts a single-node cluster on this machine (export the SLURM_CONF it prints)");
-  // Every input is read before anything runs (bad input: exit 2, nothing
-  // written); "repeat" draws one-frame inputs that many times, and an
-  // animation as it is.
-  std::map<std::string, bool> repeat;
-  const Params base = Params::from_files(spec.base);
-  for (const std::string& input : spec.inputs) {
-    const size_t frames = read_input(input, std::nullopt, base).frames.size();
-    repeat[input] = spec.repeat > 1 && frames == 1;
-    if (spec.repeat > 1 && frames > 1 && a.slice.empty())
-      std::fprintf(stderr, "warning: %s: %zu frames: \"repeat\" draws one-frame inputs; this one runs as it is\n",
-                   input.c_str(), frames);
-  }
-  const std::string out = a.out_dir.empty() ? "out/sweep/" + fs::path(a.spec).stem().string() : a.out_dir;
-  check_output_dir(out, "--out");
+  SweepSetup s = prepare_sweep(a, slice, slices, a.slice.empty());
+  const SweepSpec& spec = s.spec;
+  const std::string& out = s.out;
   const fs::path dir(out);
-  fs::create_directories(dir / "rows");
-  // One gathering sweep per folder at a time (its Slurm tasks excepted).
-  const int lock = a.slice.empty() ? open((dir / ".lock").c_str(), O_CREAT | O_RDWR, 0644) : -1;
-  if (lock >= 0 && flock(lock, LOCK_EX | LOCK_NB) != 0)
-    throw InputError("--out", 0, "another girtd sweep is running in " + out);
-  const std::vector<SweepPoint> points = sweep_points(spec, out);
-  if (a.slice.empty() && !yosys_available())
-    std::fprintf(stderr, "warning: yosys is not installed: cost_yosys_dda_cells stays null (tools/girtd hw-cost "
-                         "installs it)\n");
-  std::vector<Task> tasks;
-  std::set<std::string> ids;  // two combinations can merge to one design: it runs once
-  for (const SweepPoint& p : points)
-    for (const std::string& input : spec.inputs) {
-      const std::string id = p.id + "-" + row_tag(input, spec, repeat[input]);
-      if (ids.insert(id).second) tasks.push_back({&p, input, id, repeat[input]});
-    }
-  std::vector<size_t> todo;
-  for (size_t i = slice; i < tasks.size(); i += slices)
-    if (!fs::exists(dir / "rows" / (tasks[i].id + ".json"))) todo.push_back(i);
+  const std::vector<SweepPoint>& points = s.points;
+  const std::vector<Task>& tasks = s.tasks;
+  std::vector<size_t>& todo = s.todo;
   std::printf("girtd sweep: %zu points x %zu inputs = %zu rows on %s; %zu already in %s\n", points.size(),
               spec.inputs.size(), tasks.size(), spec.backend.c_str(), tasks.size() - todo.size(), out.c_str());
   std::fflush(stdout);
-
-  if (a.slurm && !todo.empty()) {
-    const int rc = run_slurm_array(a, out, todo.size());
-    if (rc != 0) std::fprintf(stderr, "warning: sbatch exited %d (logs in %s/slurm/)\n", rc, out.c_str());
-    todo.clear();
-    for (size_t i = 0; i < tasks.size(); ++i)
-      if (!fs::exists(dir / "rows" / (tasks[i].id + ".json"))) todo.push_back(i);
-    if (!todo.empty()) std::printf("%zu row(s) the array did not write: running them here\n", todo.size());
-  }
   Progress progress(tasks.size(), tasks.size() - todo.size());
   std::atomic<size_t> next{0};
   struct sigaction stop_action {};
@@ -328,21 +353,24 @@ int run_sweep(const SweepArgs& a) {
   std::vector<std::string> axes;
   for (const SweepAxis& ax : spec.axes) axes.push_back(ax.name);
   const SweepSummary summary = summarize_sweep(rows, axes, spec.inputs.size());
+  size_t unsized = 0;
+  for (const SweepPoint& p : points) unsized += p.invalid.empty() && p.cost["cost_yosys_dda_cells"].is_null();
+  if (unsized)
+    std::fprintf(stderr, "warning: %zu point(s) without cost_yosys_dda_cells: tools/girtd sweep sizes the DDA by "
+                         "synthesis first (yosys: tools/girtd hw-cost installs it)\n", unsized);
   OutputSet files(out);
   files.add_text("results.json", json{{"spec", a.spec}, {"backend", spec.backend}, {"repeat", spec.repeat},
-                                      {"target_mpixels_per_s", base.target_mpixels_per_s},
+                                      {"target_mpixels_per_s", s.base.target_mpixels_per_s},
                                       {"axes", axes}, {"rows", rows}, {"points", summary.points}}
                                       .dump(2) + "\n");
   files.add_text("results.csv", sweep_csv(rows, axes));
   files.add_text("sweep.md", "# girtd sweep " + a.spec + "\n\n" + summary.markdown);
   const std::optional<ChartLibrary> charts = load_chart_library();
   if (!charts) std::fprintf(stderr, "warning: sweep.html: %s\n", kNoChartLibrary);
-  files.add_text("sweep.html", sweep_html(a.spec, summary.headline, summary.points, axes, base.target_mpixels_per_s, charts));
+  files.add_text("sweep.html", sweep_html(a.spec, summary.headline, summary.points, axes, s.base.target_mpixels_per_s, charts));
   files.commit();
   std::fputs(summary.headline.c_str(), stdout);
-  const int plot = run_process({"/usr/bin/python3", std::string(GIRTD_SOURCE_DIR) + "/tools/sweep_plots.py", out}, false);
-  std::printf("wrote %s, results.csv, sweep.md, sweep.html%s\n", files.path("results.json").c_str(), plot == 0 ? " and the plots" : "");
-  if (plot != 0) std::fprintf(stderr, "warning: the plot failed (python3-matplotlib; tools/girtd installs it)\n");
+  std::printf("wrote %s, results.csv, sweep.md, sweep.html\n", files.path("results.json").c_str());
   if (disagreements) std::printf("%d spot check(s) disagree with rtl\n", disagreements);
   return disagreements ? 1 : 0;
 }

@@ -10,7 +10,7 @@
 #include "config/params.hpp"
 #include "cost/hardware_cost.hpp"
 #include "io/sha256.hpp"
-#include "sweep/yosys_cells.hpp"
+#include "sweep/dda_cells.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -64,7 +64,7 @@ std::vector<SweepPoint> sweep_points(const SweepSpec& spec, const std::string& d
       const Params p = Params::from_files(files);
       pt.id = config_key(p);
       pt.cost = cost_json(hardware_cost(p));
-      const std::optional<long> cells = dda_yosys_cells(p, points_dir.string());
+      const std::optional<long> cells = dda_cells(p, points_dir.string());
       pt.cost["cost_yosys_dda_cells"] = cells ? json(*cells) : json();
     } catch (const InputError& e) {
       std::string base_text;

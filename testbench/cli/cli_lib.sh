@@ -1,9 +1,13 @@
 # Shared set-up of the CLI test scripts: sourced with GIRTD_BINARY REPO_ROOT
-# as $1 $2. Gives GIRTD and ROOT (absolute), a scratch $TMP removed on exit,
-# ok / bad counters and `finish` printing "N passed, N failed".
+# as $1 $2. Gives GIRTD and ROOT (absolute), RUN (the driver tools/girtd on
+# that binary: it makes the RTL variants and synthesis sizes a command needs
+# first and draws the plots after, as a user's run does), a scratch $TMP
+# removed on exit, ok / bad counters and `finish` printing "N passed, N failed".
 set -uo pipefail
 GIRTD=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 ROOT=$(cd "$2" && pwd)
+export GIRTD_BINARY="$GIRTD"
+RUN="$ROOT/tools/girtd"
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 cd "$ROOT"

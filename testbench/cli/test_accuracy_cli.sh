@@ -14,7 +14,7 @@
 # Usage: test_accuracy_cli.sh GIRTD_BINARY REPO_ROOT
 source "$(dirname "$0")/cli_lib.sh" "$1" "$2"
 A=$TMP/timing
-"$GIRTD" accuracy traces/demo.trace traces/opaque_200px.trace --backends rtl,approx,dda_bound,approx_sampled_0.1 \
+"$RUN" accuracy traces/demo.trace traces/opaque_200px.trace --backends rtl,approx,dda_bound,approx_sampled_0.1 \
   --out "$A" > "$TMP/out.txt" 2>&1 && ok || bad "accuracy failed: $(tail -5 "$TMP/out.txt")"
 J=$A/accuracy.json
 jq -e '.rows | length == 10' "$J" >/dev/null && ok || bad "rows: $(jq '.rows | length' "$J")"
@@ -48,7 +48,7 @@ grep -q 'data-errors="0"' "$TMP/acc_dom.html" && grep -q "$want" "$TMP/acc_dom.h
   || bad "accuracy.html: $(grep -oE '<body[^>]*>|<div id="error_chart"[^>]*>' "$TMP/acc_dom.html"), want $want"
 
 P=$TMP/precision
-"$GIRTD" accuracy traces/opaque_200px.trace --backends golden --vary ep.d.frac_bits=6,12,16 --out "$P" \
+"$RUN" accuracy traces/opaque_200px.trace --backends golden --vary ep.d.frac_bits=6,12,16 --out "$P" \
   > "$TMP/out2.txt" 2>&1 && ok || bad "precision run failed: $(tail -5 "$TMP/out2.txt")"
 J=$P/accuracy.json
 jq -e '[.rows[] | select(.variant == "ep.d.frac_bits=6") | .invalid | test("ep.d.frac_bits")] | all and length == 2' \
@@ -63,9 +63,9 @@ for key in input level variant wall_s sim_pixels_per_s dda_clocks_per_s modeled_
   jq -e --arg k "$key" 'all(.rows[]; has($k))' "$J" >/dev/null && ok || bad "a precision row lacks $key"
 done
 
-"$GIRTD" accuracy traces/demo.trace --backends golden,warp --out "$TMP/x" > "$TMP/err" 2>&1
+"$RUN" accuracy traces/demo.trace --backends golden,warp --out "$TMP/x" > "$TMP/err" 2>&1
 [[ $? -eq 2 && $(wc -l < "$TMP/err") -eq 1 ]] && grep -q "^--backends: 'warp'" "$TMP/err" && ok || bad "bad level: $(cat "$TMP/err")"
-"$GIRTD" accuracy traces/demo.trace --vary nokey --out "$TMP/x" > "$TMP/err" 2>&1
+"$RUN" accuracy traces/demo.trace --vary nokey --out "$TMP/x" > "$TMP/err" 2>&1
 [[ $? -eq 2 ]] && grep -q "^--vary: expected KEY=V1,V2" "$TMP/err" && ok || bad "bad --vary: $(cat "$TMP/err")"
 [[ ! -e "$TMP/x/accuracy.json" ]] && ok || bad "bad usage wrote output"
 finish

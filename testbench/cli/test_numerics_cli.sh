@@ -11,12 +11,12 @@ cp traces/stress/huge_overhang.trace "$TMP/huge.trace"
 printf '{"ep": {"d": {"int_bits": 14}}}\n' > "$TMP/d14.json"
 wraps='[.numerics.D1.wraps, .numerics.D2.wraps, .numerics.D3.wraps] | add'
 
-"$GIRTD" render "$TMP/huge.trace" --backend reference --out "$TMP/ref" --quiet && ok || bad "reference"
+"$RUN" render "$TMP/huge.trace" --backend reference --out "$TMP/ref" --quiet && ok || bad "reference"
 jq -e '.pixels_written == 1048576 and .numerics == null' "$TMP/ref/report.json" >/dev/null && ok \
   || bad "reference: $(jq -c '[.pixels_written, .numerics]' "$TMP/ref/report.json")"
 
 for b in golden approx; do
-  "$GIRTD" render "$TMP/huge.trace" --backend $b --out "$TMP/$b" --quiet 2> "$TMP/$b.err" && ok || bad "$b render"
+  "$RUN" render "$TMP/huge.trace" --backend $b --out "$TMP/$b" --quiet 2> "$TMP/$b.err" && ok || bad "$b render"
   r="$TMP/$b/report.json"
   # The picture is wrong, and the run says so: counted, one warning naming D and the option.
   jq -e "($wraps) > 0 and .numerics.triangles_affected == 1 and .numerics.first_triangle_affected == 1
@@ -25,7 +25,7 @@ for b in golden approx; do
     "$TMP/$b.err" && ok || bad "$b: warning line: $(cat "$TMP/$b.err")"
   jq -e '.warnings | length == 1' "$r" >/dev/null && ok || bad "$b: report warnings"
   # Two more integer bits hold the whole triangle: every pixel, no wrap, no warning.
-  "$GIRTD" render "$TMP/huge.trace" --backend $b --config "$TMP/d14.json" --out "$TMP/${b}14" --quiet 2> "$TMP/${b}14.err" \
+  "$RUN" render "$TMP/huge.trace" --backend $b --config "$TMP/d14.json" --out "$TMP/${b}14" --quiet 2> "$TMP/${b}14.err" \
     && ok || bad "$b d14 render"
   jq -e "($wraps) == 0 and .pixels_written == 1048576 and .warnings == []" "$TMP/${b}14/report.json" >/dev/null && ok \
     || bad "$b with 14 integer bits: $(jq -c '[.pixels_written, .numerics.D1]' "$TMP/${b}14/report.json")"
@@ -36,7 +36,7 @@ done
 
 # Many triangles, colour and Z wraps in slivers' fringes: approx counts what golden counts.
 for b in golden approx; do
-  "$GIRTD" render traces/scenes/animation.json --backend $b --out "$TMP/an_$b" --quiet 2> "$TMP/an_$b.err" && ok || bad "an $b"
+  "$RUN" render traces/scenes/animation.json --backend $b --out "$TMP/an_$b" --quiet 2> "$TMP/an_$b.err" && ok || bad "an $b"
 done
 jq -e '.numerics.triangles_affected > 1 and .numerics.first_triangle_affected > 1' "$TMP/an_golden/report.json" >/dev/null \
   && ok || bad "animation: $(jq -c .numerics "$TMP/an_golden/report.json")"
@@ -45,20 +45,20 @@ jq -e '.numerics.triangles_affected > 1 and .numerics.first_triangle_affected > 
 grep -q "^warning: traces/scenes/animation.json: wrapped EP values in use" "$TMP/an_golden.err" && ok || bad "animation warning"
 
 # A triangle well inside the range: nothing counted but output clips.
-"$GIRTD" render traces/equilateral_200.trace --backend golden --out "$TMP/eq" --quiet 2> "$TMP/eq.err" && ok || bad "eq"
+"$RUN" render traces/equilateral_200.trace --backend golden --out "$TMP/eq" --quiet 2> "$TMP/eq.err" && ok || bad "eq"
 jq -e "($wraps) == 0 and .numerics.triangles_affected == 0 and .numerics.first_triangle_affected == null" \
   "$TMP/eq/report.json" >/dev/null && ok || bad "equilateral: $(jq -c .numerics "$TMP/eq/report.json")"
 [[ ! -s "$TMP/eq.err" ]] && ok || bad "equilateral warned: $(cat "$TMP/eq.err")"
 
 # The RTL's wrap detector counts what golden counts (hw/dda/dda_limits.sv).
-"$GIRTD" render "$TMP/huge.trace" --backend rtl --out "$TMP/rtl" --quiet 2> "$TMP/rtl.err" && ok || bad "rtl render"
+"$RUN" render "$TMP/huge.trace" --backend rtl --out "$TMP/rtl" --quiet 2> "$TMP/rtl.err" && ok || bad "rtl render"
 [[ "$(jq -c .numerics "$TMP/golden/report.json")" == "$(jq -c .numerics "$TMP/rtl/report.json")" ]] && ok \
   || bad "rtl counts differ from golden's: $(jq -c .numerics "$TMP/rtl/report.json")"
 grep -q "^warning: $TMP/huge.trace: wrapped EP values in use" "$TMP/rtl.err" && ok || bad "rtl warning: $(cat "$TMP/rtl.err")"
 
 # robust.json: far edges as constants draw every pixel with no D wider, on every back end alike.
 for b in golden approx rtl; do
-  "$GIRTD" render "$TMP/huge.trace" --backend $b --config config/presets/robust.json --out "$TMP/${b}_robust" --quiet \
+  "$RUN" render "$TMP/huge.trace" --backend $b --config config/presets/robust.json --out "$TMP/${b}_robust" --quiet \
     2> "$TMP/${b}_robust.err" && ok || bad "$b robust render"
   jq -e "($wraps) == 0 and .pixels_written == 1048576 and .warnings == []" "$TMP/${b}_robust/report.json" >/dev/null \
     && ok || bad "$b robust: $(jq -c '[.pixels_written, .numerics.D1]' "$TMP/${b}_robust/report.json")"
@@ -79,7 +79,7 @@ done
   done
 } > "$TMP/fan4.trace"
 for b in reference golden approx; do
-  "$GIRTD" render "$TMP/fan4.trace" --backend $b --out "$TMP/fan_$b" --quiet 2> "$TMP/fan_$b.err" && ok || bad "fan $b"
+  "$RUN" render "$TMP/fan4.trace" --backend $b --out "$TMP/fan_$b" --quiet 2> "$TMP/fan_$b.err" && ok || bad "fan $b"
   # Four spokes of 300 pixels besides the centre, each drawn twice, the centre
   # four times: 1203. (The reference's inclusive float test loses the spokes'
   # far ends, which lie exactly on the hypotenuses, to rounding.)
@@ -87,7 +87,7 @@ for b in reference golden approx; do
   jq -e ".pixels_reblended == $expected" "$TMP/fan_$b/report.json" >/dev/null && ok \
     || bad "fan $b: $(jq -c .pixels_reblended "$TMP/fan_$b/report.json") seams, $expected expected"
   grep -q "^warning: $TMP/fan4.trace: $expected pixel blends by a surface" "$TMP/fan_$b.err" && ok || bad "fan $b warning"
-  "$GIRTD" render "$TMP/fan4.trace" --backend $b --config config/presets/robust.json --out "$TMP/fanr_$b" --quiet \
+  "$RUN" render "$TMP/fan4.trace" --backend $b --config config/presets/robust.json --out "$TMP/fanr_$b" --quiet \
     2> "$TMP/fanr_$b.err" && ok || bad "fan robust $b"
   jq -e '.pixels_reblended == 0 and .pixels_blended == .pixels_generated' "$TMP/fanr_$b/report.json" >/dev/null \
     && ok || bad "fan robust $b: $(jq -c '[.pixels_reblended, .pixels_blended]' "$TMP/fanr_$b/report.json")"

@@ -8,7 +8,7 @@ sha() { jq -r .image_sha256 "$1/report.json"; }
 
 # 1. Every frame of a two-frame trace is golden's, on both timed back ends.
 for b in golden approx rtl; do
-  "$GIRTD" render traces/equilateral_200.trace --backend $b --frames all --out "$TMP/eq_$b" --quiet && ok || bad "$b render"
+  "$RUN" render traces/equilateral_200.trace --backend $b --frames all --out "$TMP/eq_$b" --quiet && ok || bad "$b render"
 done
 for b in approx rtl; do
   for f in frame_000.png frame_001.png frame.png; do
@@ -20,7 +20,7 @@ done
 
 # 2. A model through the timed front end: same counts as the untimed one.
 for b in golden approx; do
-  "$GIRTD" render traces/models/star.obj --backend $b --out "$TMP/star_$b" --quiet && ok || bad "star $b"
+  "$RUN" render traces/models/star.obj --backend $b --out "$TMP/star_$b" --quiet && ok || bad "star $b"
 done
 [[ "$(jq -c .frontend "$TMP/star_golden/report.json")" == "$(jq -c .frontend "$TMP/star_approx/report.json")" ]] \
   && ok || bad "front-end counts differ between golden and approx"
@@ -53,14 +53,14 @@ grep -qE "^(PASS|FAIL): modeled .* Mpixel/s against the 20 Mpixel/s target" "$TM
   && ok || bad "report.md lacks the target verdict"
 
 # 4. Refusals: exit 2, one line, no output.
-"$GIRTD" render traces/thesis/equilateral_200.trace --backend approx --out "$TMP/th" 2> "$TMP/err"; rc=$?
+"$RUN" render traces/thesis/equilateral_200.trace --backend approx --out "$TMP/th" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 && $(wc -l < "$TMP/err") -eq 1 && ! -e "$TMP/th" ]] && ok || bad "thesis trace on approx: exit $rc"
 # The memory-side options: approx models them all; the frame is unchanged
 # and approx's time is rtl's.
 printf '{"had": {"write_behind": true, "prefetch": true, "dirty_bits": true}, "vram": {"steal_every_ns": 1000.0}}\n' \
   > "$TMP/mem.json"
 for b in approx rtl; do
-  "$GIRTD" render traces/equilateral_200.trace --backend $b --config "$TMP/mem.json" --out "$TMP/mem_$b" --quiet \
+  "$RUN" render traces/equilateral_200.trace --backend $b --config "$TMP/mem.json" --out "$TMP/mem_$b" --quiet \
     && ok || bad "$b with the memory-side options failed"
   [[ "$(sha "$TMP/mem_$b")" == "$(sha "$TMP/eq_golden")" ]] && ok || bad "the memory-side options changed the frame on $b"
 done
@@ -68,12 +68,12 @@ done
   && ok || bad "approx's time with the memory-side options differs from rtl's"
 
 # 5. --dump from a timed back end equals golden's dump.
-"$GIRTD" render traces/z_overlap.trace --backend golden --out "$TMP/zg" --dump "dda=$TMP/zg.dda" --quiet && ok || bad "dump golden"
-"$GIRTD" render traces/z_overlap.trace --backend approx --out "$TMP/za" --dump "dda=$TMP/za.dda" --quiet && ok || bad "dump approx"
+"$RUN" render traces/z_overlap.trace --backend golden --out "$TMP/zg" --dump "dda=$TMP/zg.dda" --quiet && ok || bad "dump golden"
+"$RUN" render traces/z_overlap.trace --backend approx --out "$TMP/za" --dump "dda=$TMP/za.dda" --quiet && ok || bad "dump approx"
 cmp -s <(grep -v '^#' "$TMP/zg.dda") <(grep -v '^#' "$TMP/za.dda") && ok || bad "approx dump differs from golden's"
 # A scene's triangles as they left the timed front end equal golden's.
 for b in golden approx; do
-  "$GIRTD" render traces/scenes/animation.json --backend $b --out "$TMP/an_$b" --dump "triangle=$TMP/an_$b.trace" \
+  "$RUN" render traces/scenes/animation.json --backend $b --out "$TMP/an_$b" --dump "triangle=$TMP/an_$b.trace" \
     --quiet && ok || bad "triangle dump $b"
 done
 cmp -s <(grep -v '^#' "$TMP/an_golden.trace") <(grep -v '^#' "$TMP/an_approx.trace") && ok \
@@ -86,7 +86,7 @@ script -qec "'$GIRTD' render traces/scenes/demo.json --backend rtl --repeat 3 --
   > "$TMP/tty" 2>&1 || true
 [[ -s "$TMP/win/report.json" ]] && ok || bad "render on a terminal"
 grep -qE "\[girtd\] rtl: frame [1-3]/3, [0-9]+/[0-9]+ objects in \([0-9]+ %\), [0-9]+ triangles drawn" "$TMP/tty" && ok || bad "no progress line: $(tail -c 300 "$TMP/tty")"
-"$GIRTD" render traces/scenes/window.json --backend rtl --out "$TMP/win2" --quiet 2> "$TMP/err" && ok || bad "rtl render"
+"$RUN" render traces/scenes/window.json --backend rtl --out "$TMP/win2" --quiet 2> "$TMP/err" && ok || bad "rtl render"
 check_registry "$TMP/win2/report.json"
 [[ ! -s "$TMP/err" ]] && ok || bad "stderr not empty without a terminal: $(head -c 200 "$TMP/err")"
 
@@ -96,7 +96,7 @@ printf '{"vram": {"cycle_ns": 230.0}}\n' > "$TMP/vram230.json"
 printf '{"vram": {"serial_transfers": 0}}\n' > "$TMP/noclear.json"
 for cfg in vram230 noclear; do
   for b in approx rtl; do
-    "$GIRTD" render traces/equilateral_200.trace --backend $b --config "$TMP/$cfg.json" --out "$TMP/$cfg-$b" --quiet \
+    "$RUN" render traces/equilateral_200.trace --backend $b --config "$TMP/$cfg.json" --out "$TMP/$cfg-$b" --quiet \
       && ok || bad "$cfg: $b render"
   done
   [[ "$(jq -c '[.modeled_time_s, .time_split]' "$TMP/$cfg-approx/report.json")" == \
@@ -110,7 +110,7 @@ done
 # frames; approx and rtl agree on it; one frame has none; an animation is
 # refused (it is not static).
 for b in approx rtl; do
-  "$GIRTD" render traces/scenes/window.json --backend $b --repeat 3 --out "$TMP/rep-$b" --quiet     && ok || bad "--repeat 3 on $b"
+  "$RUN" render traces/scenes/window.json --backend $b --repeat 3 --out "$TMP/rep-$b" --quiet     && ok || bad "--repeat 3 on $b"
 done
 R=$TMP/rep-approx/report.json
 jq -e '.frames == 3 and .sustained_mpixels_per_s >= .modeled_mpixels_per_s
@@ -120,7 +120,7 @@ jq -e '.frames == 3 and .sustained_mpixels_per_s >= .modeled_mpixels_per_s
 grep -qE "^(PASS|FAIL): sustained .* Mpixel/s against the 20 Mpixel/s target" "$TMP/rep-approx/report.md" \
   && ok || bad "report.md does not judge the sustained rate"
 jq -e '.sustained_mpixels_per_s == null' "$TMP/win2/report.json" >/dev/null && ok || bad "one frame has a sustained rate"
-"$GIRTD" render traces/scenes/animation.json --backend approx --repeat 2 --out "$TMP/rep-anim" --quiet 2> "$TMP/err"
+"$RUN" render traces/scenes/animation.json --backend approx --repeat 2 --out "$TMP/rep-anim" --quiet 2> "$TMP/err"
 [[ $? -eq 2 ]] && grep -q "^--repeat: traces/scenes/animation.json has [0-9]* frames" "$TMP/err" \
   && ok || bad "--repeat on an animation: $(cat "$TMP/err")"
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # RTL variants on demand (sim/rtl/rtl_variants.hpp): a configuration whose
-# widths, layouts or depths the built RTL lacks runs in an RTL variant built
-# for it. For each CONFIG, INPUT renders on golden, approx and rtl:
+# widths, layouts or depths the built RTL lacks runs in an RTL variant the
+# driver (tools/girtd, here on the given binary) builds for it first. For each CONFIG, INPUT renders on golden, approx and rtl:
 # - one frame: golden's (the bit-exact model, which needs no build);
 # - approx and rtl: the same counts (pixels, DDA clocks and states, cache
 #   accesses and page misses, FIFO maximum) and the same modeled time (to
@@ -9,7 +9,8 @@
 # - under a slow HAD (slow_had.json, merged after CONFIG) the DDA -> HAD FIFO
 #   fills to exactly its configured depth on approx and rtl;
 # - approx's and rtl's report.html heat maps are the same;
-# - a second rtl run reuses the variant (no "building" line).
+# - a second rtl run reuses the variant (no "building" line);
+# - the simulator run without the driver refuses a variant it lacks.
 # Prints one row per CONFIG.
 # Usage: test_rtl_variants.sh GIRTD_BINARY REPO_ROOT INPUT CONFIG...
 source "$(dirname "${BASH_SOURCE[0]}")/cli_lib.sh" "$1" "$2"
@@ -30,12 +31,20 @@ misses = re.search(r"\"page_misses\":\{[^}]*\"counts\":\[([0-9,]*)\]", data).gro
 waste = re.search(r"id=\"waste_map\"[^>]*src=\"([^\"]*)\"", page).group(1)
 print(hashlib.sha256((misses + waste).encode()).hexdigest())' "$1"
 }
+# The simulator alone builds nothing: without the driver's variant step, one
+# line naming it, exit 2, nothing written.
+GIRTD_VARIANTS_DIR="$TMP/no_variants" "$GIRTD" render "$input" --backend rtl --config "$1" --out "$TMP/refused" \
+  2> "$TMP/refused.err"
+rc=$?
+[[ $rc -eq 2 && $(wc -l < "$TMP/refused.err") -eq 1 && ! -e "$TMP/refused" ]] \
+  && grep -q "^--config: needs the RTL elaborated for .*, which is not built: tools/girtd builds it" "$TMP/refused.err" \
+  && ok || bad "the simulator alone: rc $rc, $(cat "$TMP/refused.err")"
 printf '%-14s %-17s %-8s %-9s %-12s %-9s %-14s %-14s\n' config rtl_build built image page_misses fifo_max approx_time_s rtl_time_s
 for cfg in "$@"; do
   name=$(basename "$cfg" .json)
   mkdir -p "$TMP/$name"
   for b in golden approx rtl; do
-    "$GIRTD" render "$input" --backend $b --config "$cfg" --out "$TMP/$name/$b" --quiet 2> "$TMP/$name/$b.err" \
+    "$RUN" render "$input" --backend $b --config "$cfg" --out "$TMP/$name/$b" --quiet 2> "$TMP/$name/$b.err" \
       && ok || bad "$name: $b render: $(cat "$TMP/$name/$b.err")"
   done
   build_line=$(grep -o "building an RTL variant.*in [^ ]*" "$TMP/$name/rtl.err" | head -1)
@@ -54,13 +63,13 @@ for cfg in "$@"; do
     && ok || bad "$name: approx's and rtl's heat maps differ"
 
   # Reused: the second run builds nothing.
-  "$GIRTD" render "$input" --backend rtl --config "$cfg" --out "$TMP/$name/rtl2" --quiet 2> "$TMP/$name/rtl2.err" \
+  "$RUN" render "$input" --backend rtl --config "$cfg" --out "$TMP/$name/rtl2" --quiet 2> "$TMP/$name/rtl2.err" \
     && ! grep -q "^girtd: .*RTL variant" "$TMP/$name/rtl2.err" && ok || bad "$name: the variant was not reused: $(cat "$TMP/$name/rtl2.err")"
 
   # The FIFO fills to its depth (and reports it: a 64-deep FIFO needs a 7-bit count).
   depth=$(jq .config.fifo.dda_had_depth "$r")
   for b in approx rtl; do
-    "$GIRTD" render "$fill_input" --backend $b --config "$cfg" --config "$slow" --out "$TMP/$name/fill_$b" --quiet \
+    "$RUN" render "$fill_input" --backend $b --config "$cfg" --config "$slow" --out "$TMP/$name/fill_$b" --quiet \
       && ok || bad "$name: $b fill run"
     got=$(jq .stages.had.fifo_in_max "$TMP/$name/fill_$b/report.json" 2> /dev/null)
     [[ "$got" == "$depth" ]] && ok || bad "$name: $b: the FIFO's maximum under a slow HAD is $got, its depth $depth"

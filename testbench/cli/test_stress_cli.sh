@@ -8,7 +8,7 @@ subset=--fast; [[ "${3:-}" == --full ]] && subset=""
 
 verdict() { awk -F, -v c="$2" '$2 == c {print $3}' "$1/results.csv"; }
 
-"$GIRTD" stress $subset --out "$TMP/thesis" > "$TMP/thesis.out" 2> "$TMP/thesis.err" && ok || bad "thesis: exit $?: $(tail -3 "$TMP/thesis.err")"
+"$RUN" stress $subset --out "$TMP/thesis" > "$TMP/thesis.out" 2> "$TMP/thesis.err" && ok || bad "thesis: exit $?: $(tail -3 "$TMP/thesis.err")"
 grep -Eq '^[0-9]+ passed, [0-9]+ flagged, 0 failed$' "$TMP/thesis.out" && ok || bad "thesis closing line: $(cat "$TMP/thesis.out")"
 rows=$(($(wc -l < "$TMP/thesis/results.csv") - 1))
 [[ $rows -ge 24 ]] && ok || bad "thesis: only $rows cases"
@@ -19,17 +19,17 @@ rows=$(($(wc -l < "$TMP/thesis/results.csv") - 1))
 
 # The fixes are judged where they apply (every family runs on robust.json under --full).
 families=(--family huge --family shared --family zrange); [[ -z "$subset" ]] && families=()
-"$GIRTD" stress $subset "${families[@]}" --config config/presets/robust.json --out "$TMP/robust" > "$TMP/robust.out" 2> "$TMP/robust.err" \
+"$RUN" stress $subset "${families[@]}" --config config/presets/robust.json --out "$TMP/robust" > "$TMP/robust.out" 2> "$TMP/robust.err" \
   && ok || bad "robust: exit $?: $(tail -3 "$TMP/robust.err")"
 awk -F, 'NR > 1 && ($1 == "huge" || $1 == "shared" || $1 == "zrange") && $3 != "exact" {print $2 ": " $3 " " $10}' \
   "$TMP/robust/results.csv" > "$TMP/robust.notexact"
 [[ ! -s "$TMP/robust.notexact" ]] && ok || bad "robust: $(cat "$TMP/robust.notexact")"
 
 # A render that does not finish is a FAIL, not a wait: exit 1.
-"$GIRTD" stress --fast --family limits --timeout 0.001 --out "$TMP/hang" > "$TMP/hang.out" 2> "$TMP/hang.err"
+"$RUN" stress --fast --family limits --timeout 0.001 --out "$TMP/hang" > "$TMP/hang.out" 2> "$TMP/hang.err"
 [[ $? == 1 ]] && ok || bad "a hang did not exit 1"
 grep -q "FAIL .*a hang" "$TMP/hang.err" && ok || bad "hang verdict: $(cat "$TMP/hang.err")"
 # Usage errors exit 2.
-"$GIRTD" stress --family nope > /dev/null 2>&1; [[ $? == 2 ]] && ok || bad "unknown family not refused"
+"$RUN" stress --family nope > /dev/null 2>&1; [[ $? == 2 ]] && ok || bad "unknown family not refused"
 
 finish

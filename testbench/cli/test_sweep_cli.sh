@@ -13,7 +13,7 @@
 # Usage: test_sweep_cli.sh GIRTD_BINARY REPO_ROOT
 source "$(dirname "$0")/cli_lib.sh" "$1" "$2"
 S=traces/sweeps/small.json
-"$GIRTD" sweep $S --jobs 2 --out "$TMP/a" > "$TMP/out.txt" 2> "$TMP/err.txt" && ok || bad "sweep failed: $(tail -5 "$TMP/out.txt" "$TMP/err.txt")"
+"$RUN" sweep $S --jobs 2 --out "$TMP/a" > "$TMP/out.txt" 2> "$TMP/err.txt" && ok || bad "sweep failed: $(tail -5 "$TMP/out.txt" "$TMP/err.txt")"
 J=$TMP/a/results.json
 jq -e '.rows | length == 64' "$J" >/dev/null && ok || bad "rows: $(jq '.rows | length' "$J")"
 jq -e '[.rows[] | select(."fifo.dda_had_depth" == 64)] | all(.valid == false and (.invalid | test("fifo.dda_had_depth")))' \
@@ -46,21 +46,21 @@ want="data-points=\"$(jq '[.points[] | select(.valid)] | length' "$J")\" data-fr
 grep -q "$want" "$TMP/sweep_dom.html" && ok || bad "sweep.html chart: $(grep -o '<div id="front_chart"[^>]*>' "$TMP/sweep_dom.html"), want $want"
 
 # Killed after a few rows, then rerun: the same rows as the clean run.
-setsid "$GIRTD" sweep $S --jobs 2 --out "$TMP/b" > "$TMP/b.txt" 2>&1 &
+setsid "$RUN" sweep $S --jobs 2 --out "$TMP/b" > "$TMP/b.txt" 2>&1 &
 pid=$!
 # Waits for rows, not for a time: a loaded CI machine wrote 13 rows in 10 s.
 for _ in $(seq 1200); do [[ $(ls "$TMP/b/rows" 2>/dev/null | grep -c '\.json$') -ge 10 ]] && break; sleep 0.25; done
 kill -- -"$pid" 2>/dev/null; wait "$pid" 2>/dev/null
 n=$(ls "$TMP/b/rows" | grep -c '\.json$')
 [[ $n -ge 10 && $n -lt 64 ]] && ok || bad "the kill came at $n rows"
-"$GIRTD" sweep $S --jobs 2 --out "$TMP/b" > "$TMP/b2.txt" 2>&1 && ok || bad "resumed sweep failed"
+"$RUN" sweep $S --jobs 2 --out "$TMP/b" > "$TMP/b2.txt" 2>&1 && ok || bad "resumed sweep failed"
 grep -q "already in" "$TMP/b2.txt" && ok || bad "no resume line"
 norm='[.rows[] | del(.wall_s)] | sort_by(.point, .input)'
 if [[ "$(jq -c "$norm" "$TMP/b/results.json")" == "$(jq -c "$norm" "$J")" ]]; then ok
 else bad "resumed rows differ from the clean run's: $(diff <(jq -S "$norm" "$TMP/b/results.json") <(jq -S "$norm" "$J") | head -12)"; fi
 
 printf '{\n  "inputs": ["%s/traces/demo.trace"],\n  "axes": {"dda.clock_ns": [35]},\n  "colour": 1\n}\n' "$ROOT" > "$TMP/bad.json"
-"$GIRTD" sweep "$TMP/bad.json" --out "$TMP/c" > /dev/null 2> "$TMP/err"
+"$RUN" sweep "$TMP/bad.json" --out "$TMP/c" > /dev/null 2> "$TMP/err"
 rc=$?
 [[ $rc -eq 2 && $(wc -l < "$TMP/err") -eq 1 ]] && grep -q "^$TMP/bad.json:4: colour: unknown key" "$TMP/err" \
   && ok || bad "bad spec: rc $rc, $(cat "$TMP/err")"
@@ -69,7 +69,7 @@ rc=$?
 # the wrong kind, a key two axes set.
 for axes in '"dda.clok_ns": [35]' '"dda.clock_ns": ["fast"]' '"dda.clock_ns": [35], "both": [{"dda.clock_ns": 30}]'; do
   printf '{\n  "inputs": ["%s/traces/demo.trace"],\n  "axes": {%s}\n}\n' "$ROOT" "$axes" > "$TMP/bad2.json"
-  "$GIRTD" sweep "$TMP/bad2.json" --out "$TMP/d" > /dev/null 2> "$TMP/err"
+  "$RUN" sweep "$TMP/bad2.json" --out "$TMP/d" > /dev/null 2> "$TMP/err"
   [[ $? -eq 2 ]] && grep -q "^$TMP/bad2.json:3: axes\." "$TMP/err" && ok || bad "spec axes {$axes}: $(cat "$TMP/err")"
 done
 [[ ! -e "$TMP/d" ]] && ok || bad "a bad spec wrote output"

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""The PNG plot of `girtd sweep` (matplotlib, as tools/accuracy_plots.py).
+"""The PNG plot of `girtd sweep` (matplotlib, as studies/accuracy_plots.py).
 
-    python3 tools/sweep_plots.py DIR      # reads DIR/results.json
+    python3 studies/sweep_plots.py DIR      # reads DIR/results.json
 
 rate_vs_cost.png: every valid point's rate on its slowest input (sustained
 where the inputs ran as several frames) against its cost (the chip estimate

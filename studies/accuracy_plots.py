@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The PNG plots of `girtd accuracy` (matplotlib, Debian python3-matplotlib).
 
-    python3 tools/accuracy_plots.py DIR      # reads DIR/accuracy.json
+    python3 studies/accuracy_plots.py DIR      # reads DIR/accuracy.json
 
 - time_error_vs_wall.png: each timing level's |modeled-time error| against
   rtl over its wall time, log-log, one point per input, the level means as

@@ -1,0 +1,161 @@
+# The driver's variant step, sourced by tools/girtd: makes what a girtd
+# command needs before it runs, as `girtd --plan COMMAND ARGS...` lists it
+# (one tab-separated line each; sim/cli/main.cpp). The simulator itself runs
+# no build, synthesis, Python or Slurm: those happen here.
+#   variant KEY DIR WHY DEFINES STAMP  an RTL variant: configure DIR against the main build, build its
+#                                      girtd, stamp it (DIR/built_for.txt) so the simulator runs in it
+#   dda-cells DIR                      size the DDA by synthesis (DIR/synth.ys -> DIR/stat.txt)
+#   opaque-trace COUNT PATH            the speed bench's workload (tools/make_opaque_trace.py)
+#   slurm-array SLICES SPEC OUT        run the sweep's rows as a job array first (studies/sweep_on_slurm.sh)
+#   plots DIR                          draw the command's plots after it ran (studies/*_plots.py)
+
+# Debian's python3, where matplotlib and numpy are (not a pyenv shim).
+PYTHON=/usr/bin/python3
+
+# The last lines of a log, indented.
+log_tail() { tail -n 12 "$1" | sed 's/^/  /' >&2; }
+
+# build_variant KEY DIR WHY DEFINES STAMP
+build_variant() {
+  local key=$1 dir=$2 why=$3 defines=$4 stamp=$5 lock
+  mkdir -p "$dir"
+  # Two drivers (two sweeps) may want the same variant at once: one builds it.
+  exec {lock}>"$dir.lock"
+  if ! flock -n "$lock"; then
+    echo "girtd: waiting for another girtd that is building the RTL variant $key" >&2
+    flock "$lock"
+  fi
+  if [[ "$(cat "$dir/configured_for.txt" 2>/dev/null)" != "$stamp" || ! -f "$dir/build.ninja" ]]; then
+    echo "girtd: building an RTL variant for $why in $dir (once: later runs with these values reuse it;" \
+         "a few minutes, log in build.log)" >&2
+    rm -f "$dir/build.ninja" "$dir/CMakeCache.txt" "$dir/built_for.txt"
+    # shellcheck disable=SC2086  # DEFINES is a list of -D options without spaces inside
+    if ! cmake -S "$ROOT" -B "$dir" -G Ninja $defines >"$dir/build.log" 2>&1; then
+      echo "girtd: configuring the RTL variant $key failed ($dir/build.log):" >&2
+      log_tail "$dir/build.log"
+      exit 3
+    fi
+    echo "$stamp" >"$dir/configured_for.txt"
+  elif [[ "$(cat "$dir/built_for.txt" 2>/dev/null)" == "$stamp" ]] &&
+       ninja -C "$dir" -n girtd 2>/dev/null | grep -q "no work to do"; then
+    exec {lock}>&-
+    return 0
+  else
+    echo "girtd: updating the RTL variant $key ($why): its sources or the main build changed" >&2
+  fi
+  rm -f "$dir/built_for.txt"
+  if ! cmake --build "$dir" --target girtd >>"$dir/build.log" 2>&1; then
+    rm -f "$dir/configured_for.txt"  # configure afresh next time
+    echo "girtd: building the RTL variant $key failed ($dir/build.log):" >&2
+    log_tail "$dir/build.log"
+    exit 3
+  fi
+  echo "$stamp" >"$dir/built_for.txt"
+  exec {lock}>&-
+}
+
+# synthesise_dda DIR: the sweep reads the count from DIR/stat.txt.
+NO_SYNTHESIS_WARNED=""
+synthesise_dda() {
+  if ! command -v yosys >/dev/null; then
+    [[ -n "$NO_SYNTHESIS_WARNED" ]] || echo "warning: yosys is not installed: cost_yosys_dda_cells stays null" \
+      "(tools/girtd hw-cost installs it)" >&2
+    NO_SYNTHESIS_WARNED=1
+    return 0
+  fi
+  echo "girtd: sizing the DDA by synthesis for one width set ($1)" >&2
+  yosys -q -s "$1/synth.ys" >"$1/synth.log" 2>&1 || echo "warning: synthesis failed: $1/synth.log" >&2
+}
+
+# has_config ARGS...: true when the arguments name a --config file.
+has_config() {
+  local a
+  for a in "$@"; do [[ "$a" == --config || "$a" == --config=* ]] && return 0; done
+  return 1
+}
+
+# plan_key BIN ARGS...: what a plan depends on: the executable, the
+# arguments and the configuration files' contents.
+plan_key() {
+  local bin=$1 next="" a
+  shift
+  {
+    stat -c '%n %Y %s' "$bin"
+    printf '%s\n' "$PWD" "$@"
+    for a in "$@"; do
+      if [[ "$next" == 1 && -f "$a" ]]; then cat "$a"; fi
+      next=""
+      if [[ "$a" == --config ]]; then next=1; fi
+      if [[ "$a" == --config=* && -f "${a#--config=}" ]]; then cat "${a#--config=}"; fi
+    done
+  } | sha256sum | cut -c1-32
+}
+
+# prepare BIN COMMAND ARGS...: makes everything the plan lists but the array
+# and the plots, which it leaves in SLURM_ARRAY and PLOTS_DIR for run_prepared.
+SLURM_ARRAY=()
+PLOTS_DIR=""
+prepare() {
+  local bin=$1 cmd=$2
+  shift
+  # Without a configuration file only these commands can need anything: a
+  # plain render asks nothing (tools/girtd render stays fast).
+  [[ "$cmd" == accuracy || "$cmd" == sweep || "$cmd" == bench ]] || has_config "$@" || return 0
+  # A plan that asked for nothing is remembered (a girtd start costs 0.1 s):
+  # the same arguments, files and executable ask for nothing again.
+  local empty
+  empty="$(dirname "$(dirname "$bin")")/plans/$(plan_key "$bin" "$@")"
+  [[ -f "$empty" ]] && return 0
+  local plan kind a b c d e
+  plan=$("$bin" --plan "$@") || exit $?  # bad input: the simulator's one line, its exit code
+  if [[ -z "$plan" ]]; then
+    mkdir -p "$(dirname "$empty")" && : >"$empty"
+    return 0
+  fi
+  while IFS=$'\t' read -r kind a b c d e; do
+    case "$kind" in
+      variant) build_variant "$a" "$b" "$c" "$d" "$e" ;;
+      dda-cells) synthesise_dda "$a" ;;
+      opaque-trace) mkdir -p "$(dirname "$b")" && "$PYTHON" "$ROOT/tools/make_opaque_trace.py" "$a" --out "$b" ;;
+      slurm-array) SLURM_ARRAY=("$a" "$b" "$c") ;;
+      plots) PLOTS_DIR=$a ;;
+      "") ;;
+      *) echo "girtd: internal error: the plan has a line the driver does not know: $kind" >&2; exit 3 ;;
+    esac
+  done <<<"$plan"
+}
+
+# without_flag FLAG ARGS...: ARGS without FLAG, into ARGS_LEFT.
+without_flag() {
+  local flag=$1 a
+  shift
+  ARGS_LEFT=()
+  for a in "$@"; do [[ "$a" == "$flag" ]] || ARGS_LEFT+=("$a"); done
+}
+
+# run_prepared BIN COMMAND ARGS...: prepare, run, plot. Replaces this shell
+# by girtd when nothing follows it.
+run_prepared() {
+  local bin=$1 cmd=$2
+  if [[ "$cmd" == sweep ]] && printf '%s\n' "$@" | grep -qx -- --slurm; then
+    "$ROOT/studies/sweep_on_slurm.sh" check || exit 2
+  fi
+  prepare "$@"
+  shift
+  if ((${#SLURM_ARRAY[@]})); then
+    "$ROOT/studies/sweep_on_slurm.sh" run "$bin" "${SLURM_ARRAY[@]}"
+  fi
+  without_flag --slurm "$@"
+  [[ -n "$PLOTS_DIR" ]] || exec "$bin" "${ARGS_LEFT[@]}"
+  local rc=0
+  "$bin" "${ARGS_LEFT[@]}" || rc=$?
+  ((rc == 0 || rc == 1)) || exit "$rc"
+  [[ -f "$PLOTS_DIR/$cmd.json" || -f "$PLOTS_DIR/results.json" ]] || exit "$rc"
+  if "$PYTHON" "$ROOT/studies/${cmd}_plots.py" "$PLOTS_DIR"; then
+    echo "wrote the plots in $PLOTS_DIR"
+  else
+    echo "girtd $cmd: the plots failed (python3-matplotlib; tools/girtd installs it)" >&2
+    rc=1
+  fi
+  exit "$rc"
+}
