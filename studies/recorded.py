@@ -22,7 +22,7 @@ RESULTS = ROOT / "results"
 MANIFEST = RESULTS / "recorded.json"
 # What a recorded result depends on: the simulator, its design values and the
 # inputs it ran (a result of the report page only the page's code).
-SIMULATOR = ["sim", "models", "hw", "config", "traces", "cmake", "CMakeLists.txt"]
+SIMULATOR = ["sim", "models", "hw", "config", "traces", "studies", "cmake", "CMakeLists.txt"]
 MEASURES = {"report_page": ["sim/report"]}
 # Not results: this folder's own documents.
 NOT_RESULTS = {"README.md", "recorded.json"}

@@ -20,6 +20,7 @@ campaign: a coarse grid, then refinements), recorded with
 """
 import json
 import pathlib
+import subprocess
 import sys
 
 from recorded import measured_at  # studies/recorded.py: the commit a result was measured at
@@ -77,7 +78,8 @@ def settings_of(doc):
 def campaign():
     """Every valid point run on every one of the study's inputs (the thesis
     sweep's; sweeps over fewer inputs were the search, not the verdict),
-    merged by name, and its settings."""
+    merged by name, its settings, and the sweeps (each with "record": its
+    folder under results/sweeps)."""
     points, settings, docs = {}, {}, []
     th = load("study_thesis")
     for d in sorted(MEASURED.glob("study_*")):
@@ -86,7 +88,7 @@ def campaign():
         doc = load(d.name)
         if th is None or inputs_of(doc) != inputs_of(th):
             continue
-        docs.append(doc)
+        docs.append(dict(doc, record=d.name))
         settings.update(settings_of(doc))
         for p in doc["points"]:
             if p["valid"]:
@@ -120,14 +122,14 @@ def thesis():
         pathlib.Path(rows[0]["input"]).name, rate(rows[0]), reaching, len(rows), TARGET))
 
 
-def front(points):
-    pts = sorted(points.values(), key=lambda p: (p["cost"], -p["min_mpixels_per_s"]))
-    out, best = [], -1.0
-    for p in pts:
-        if p["min_mpixels_per_s"] > best:
-            out.append(p)
-            best = p["min_mpixels_per_s"]
-    return out
+def front(docs):
+    """The campaign's Pareto front, cheapest first: computed by the sweeps'
+    own definition (girtd_campaign_front, studies/sweep/sweep_table.hpp)."""
+    files = [str(MEASURED / d["record"] / "results.json") for d in docs]
+    out = subprocess.run([str(BUILD / "bin" / "girtd_campaign_front")] + files, check=True, capture_output=True,
+                         text=True).stdout
+    return sorted((p for p in json.loads(out) if p["on_front"]),
+                  key=lambda p: (p["cost"], -p["min_mpixels_per_s"], p["point"]))
 
 
 def answer():
@@ -142,7 +144,7 @@ def answer():
     print("The campaign: %s; %d points, %d rows (point x input, 8 frames each), %.0f s of render wall time in all "
           "(%.2f s a row); %s." % (", ".join("`%s`" % d["spec"] for d in docs), len(points), rows, total_wall,
                                    total_wall / max(rows, 1),
-                                   "; ".join("`%s`%s" % (d["spec"], measured_at("sweeps/" + pathlib.Path(d["spec"]).stem))
+                                   "; ".join("`%s`%s" % (d["spec"], measured_at("sweeps/" + d["record"]))
                                              for d in docs)))
     print()
     meeting = sorted((p for p in points.values() if p["meets_target"]), key=lambda p: (p["cost"], -p["min_mpixels_per_s"]))
@@ -166,7 +168,7 @@ def answer():
     print()
     print("| cost | Mpixel/s, slowest input | point | differs from the thesis in |")
     print("|---|---|---|---|")
-    for p in front(points):
+    for p in front(docs):
         s = settings[p["point"]]
         changed = sorted(k for k in s if s[k] != defaults.get(k))
         print("| %.0f | %.2f | `%s` | %s |" % (p["cost"], p["min_mpixels_per_s"], p["point"], fmt_settings(s, changed)))
@@ -245,4 +247,5 @@ def path():
 
 
 if __name__ == "__main__":
+    BUILD = pathlib.Path(sys.argv[1]).resolve()
     {"thesis": thesis, "answer": answer, "path": path}[sys.argv[2]]()

@@ -6,7 +6,7 @@ The layers are written down once, bottom first, in docs/architecture.md's
 it. What is checked:
   - C++ (#include "..." and <...>): resolved against the include paths
     the build gives that part of the tree (a models/ file: its own folder,
-    then models/; elsewhere its own folder, then sim/, then models/), so
+    then models/; elsewhere its own folder, then studies/, sim/, models/), so
     "dda/x.hpp" names the file it is;
   - SystemVerilog: a module instantiated from another folder's file;
   - Python (tools/, studies/): `import NAME` of a script beside it;
@@ -62,7 +62,9 @@ def sources(root):
 def cpp_uses(root, path):
     rel = path.relative_to(root)
     in_models = rel.parts[0] == "models"
-    roots = [path.parent, root / "models"] if in_models else [path.parent, root / "sim", root / "models"]
+    # The build's include paths: studies/ (its own), sim/, models/; no folder
+    # name is in two of them, so the order decides nothing.
+    roots = [path.parent, root / "models"] if in_models else [path.parent, root / "studies", root / "sim", root / "models"]
     for n, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
         m = re.match(r'\s*#\s*include\s*([<"])([^>"]+)[>"]', line)
         if not m:

@@ -1,6 +1,9 @@
 #include "rtl/rtl_variants.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <algorithm>
 
 #include <cstdio>
 #include <cstdlib>
@@ -9,7 +12,6 @@
 #include <stdexcept>
 
 #include "common/file_text.hpp"
-#include "common/input_error.hpp"
 #include "layout/rtl_package.hpp"
 #include "rtl/rtl_build_info.hpp"
 
@@ -19,11 +21,26 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// What a variant was built against: the driver writes this line into
-// DIR/built_for.txt once its build succeeded; a variant of another main
-// build (or sanitizer mode), or one whose build failed, is not run.
-std::string main_build_stamp() {
-  return std::string(GIRTD_MAIN_BUILD_DIR) + (GIRTD_MAIN_SANITIZED ? " sanitized" : "");
+// Which main build (and sanitizer mode) a variant links with; a variant
+// configured for another is configured again.
+std::string main_build_fields() {
+  return std::string(GIRTD_MAIN_BUILD_DIR) + "\t" + (GIRTD_MAIN_SANITIZED ? "1" : "0");
+}
+
+// This executable's identity (modification time and size): a variant built
+// before the main build changed links the old libraries, and is not run.
+std::string build_id() {
+  struct stat st {};
+  if (stat("/proc/self/exe", &st) != 0) return "unknown";
+  return std::to_string(st.st_mtim.tv_sec) + "." + std::to_string(st.st_mtim.tv_nsec) + ":" +
+         std::to_string(st.st_size);
+}
+
+// What the driver writes into DIR/built_for.txt once the build succeeded.
+std::string built_stamp() {
+  std::string s = main_build_fields() + " " + build_id();
+  std::replace(s.begin(), s.end(), '\t', ' ');
+  return s;
 }
 
 std::string trimmed(std::string s) {
@@ -47,19 +64,16 @@ std::optional<RtlVariant> needed_rtl_variant(const Params& p) {
 
 std::string rtl_variant_plan_line(const RtlVariant& v, const Params& p) {
   fs::create_directories(v.dir);
+  // The whole merged configuration: the generator checks it as a unit. Any
+  // configuration with this key elaborates the same RTL, and the variant's
+  // build configures again when the file changes: it is written once.
   const fs::path config = fs::path(v.dir) / "config.json";
-  // The whole merged configuration: the generator checks it as a unit. The
-  // build configures again when it changes, so it is written only then.
-  const std::string text = p.source.dump(2) + "\n";
-  if (read_file_text(config.string()) != text) {
+  if (!fs::exists(config)) {
     const fs::path tmp = config.string() + ".tmp" + std::to_string(getpid());
-    std::ofstream(tmp) << text;
+    std::ofstream(tmp) << p.source.dump(2) << "\n";
     fs::rename(tmp, config);
   }
-  std::string defines = "-DCMAKE_BUILD_TYPE=Release -DGIRTD_RTL_VARIANT_OF=" GIRTD_MAIN_BUILD_DIR
-                        " -DGIRTD_RTL_CONFIG=" + config.string();
-  if (GIRTD_MAIN_SANITIZED) defines += " -DGIRTD_SANITIZE=ON";
-  return "variant\t" + v.key + "\t" + v.dir + "\t" + v.why + "\t" + defines + "\t" + main_build_stamp();
+  return "variant\t" + v.key + "\t" + v.dir + "\t" + v.why + "\t" + main_build_fields() + "\t" + build_id();
 }
 
 void run_in_rtl_variant_if_needed(const Params& p, char** argv) {
@@ -70,12 +84,11 @@ void run_in_rtl_variant_if_needed(const Params& p, char** argv) {
   if (const char* running = std::getenv("GIRTD_RTL_VARIANT"); running && v->key == running)
     throw std::runtime_error("the RTL variant in " + v->dir + " holds the elaboration " + built_rtl_key() +
                              ", not " + v->key + ": remove that folder and build it again");
-  if (trimmed(read_file_text((fs::path(v->dir) / "built_for.txt").string()).value_or("")) != main_build_stamp() ||
+  if (trimmed(read_file_text((fs::path(v->dir) / "built_for.txt").string()).value_or("")) != built_stamp() ||
       !fs::exists(exe))
-    throw InputError("--config", 0,
-                     "needs the RTL elaborated for " + v->why + " (variant " + v->key + "), which is not built: " +
-                         "tools/girtd builds it before running this command (its step `tools/girtd variant " +
-                         "COMMAND ARGS...` builds it alone)");
+    throw MissingPrerequisite("this configuration needs the RTL elaborated for " + v->why + " (variant " + v->key +
+                              "), not built for this build of girtd: tools/girtd builds it before running the " +
+                              "command (`tools/girtd variant COMMAND ARGS...` builds it alone)");
   std::fflush(stdout);
   std::fflush(stderr);
   setenv("GIRTD_RTL_VARIANT", v->key.c_str(), 1);

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "config/params.hpp"
@@ -25,14 +26,25 @@ struct RtlVariant {
 // The variant `p` needs, or nothing when this executable holds its elaboration.
 std::optional<RtlVariant> needed_rtl_variant(const Params& p);
 
-// One line of `girtd --plan`: "variant KEY DIR WHY DEFINES" (tab-separated;
-// DEFINES: the configure step's -D options, space-separated). Writes the
-// merged configuration the variant is generated from into DIR/config.json.
+// One line of `girtd --plan`: "variant KEY DIR WHY MAIN SANITIZED BUILD_ID"
+// (tab-separated; MAIN: this build's folder, SANITIZED: 0 or 1, BUILD_ID:
+// this executable's identity, which the driver stamps a built variant with).
+// Writes a configuration with these RTL values into DIR/config.json, the
+// file the variant is generated from, when there is none.
 std::string rtl_variant_plan_line(const RtlVariant& v, const Params& p);
+
+// The exit code of a run that needs what the driver makes (an RTL variant)
+// and finds it missing or built against another main build.
+inline constexpr int kExitMissingPrerequisite = 4;
+class MissingPrerequisite : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 // Returns when this executable holds the elaboration `p` needs. Otherwise
 // replaces this process by the variant, run with the same `argv` (does not
-// return), or throws InputError when the driver has not built it.
+// return), or throws MissingPrerequisite when the driver has not built it
+// against this executable.
 void run_in_rtl_variant_if_needed(const Params& p, char** argv);
 
 // GIRTD_VARIANTS_DIR, or the main build's variants/ folder.

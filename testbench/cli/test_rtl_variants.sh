@@ -32,12 +32,12 @@ waste = re.search(r"id=\"waste_map\"[^>]*src=\"([^\"]*)\"", page).group(1)
 print(hashlib.sha256((misses + waste).encode()).hexdigest())' "$1"
 }
 # The simulator alone builds nothing: without the driver's variant step, one
-# line naming it, exit 2, nothing written.
+# line naming it, exit 4, nothing written.
 GIRTD_VARIANTS_DIR="$TMP/no_variants" "$GIRTD" render "$input" --backend rtl --config "$1" --out "$TMP/refused" \
   2> "$TMP/refused.err"
 rc=$?
-[[ $rc -eq 2 && $(wc -l < "$TMP/refused.err") -eq 1 && ! -e "$TMP/refused" ]] \
-  && grep -q "^--config: needs the RTL elaborated for .*, which is not built: tools/girtd builds it" "$TMP/refused.err" \
+[[ $rc -eq 4 && $(wc -l < "$TMP/refused.err") -eq 1 && ! -e "$TMP/refused" ]] \
+  && grep -q "^girtd: this configuration needs the RTL elaborated for .*, not built for this build of girtd: tools/girtd builds it" "$TMP/refused.err" \
   && ok || bad "the simulator alone: rc $rc, $(cat "$TMP/refused.err")"
 printf '%-14s %-17s %-8s %-9s %-12s %-9s %-14s %-14s\n' config rtl_build built image page_misses fifo_max approx_time_s rtl_time_s
 for cfg in "$@"; do

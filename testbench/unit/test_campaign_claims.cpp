@@ -1,4 +1,4 @@
-// Chapter 5's campaign claims (sim/claims/campaign_claims) on a hand-made
+// Chapter 5's campaign claims (studies/claims/campaign_claims) on a hand-made
 // results file: two inputs with worked numbers, and the file missing.
 #include <catch2/catch.hpp>
 

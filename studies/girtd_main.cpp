@@ -1,4 +1,7 @@
-// girtd: the simulator's command line (docs/interface.md).
+// girtd: the command line (docs/interface.md). The simulator's own
+// subcommands (render, regress: sim/cli) and the campaigns on top of it
+// (bench, claims, stress, accuracy, sweep: studies/), and `--plan`, which
+// tells the driver what a command needs before it runs.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -6,13 +9,18 @@
 #include <exception>
 #include <filesystem>
 
+#include "accuracy/accuracy_command.hpp"
 #include "accuracy/accuracy_levels.hpp"
-#include "engine/backend_registry.hpp"
+#include "bench/bench_command.hpp"
+#include "bench/golden_speed_bench.hpp"
+#include "claims/claims_command.hpp"
 #include "cli/commands.hpp"
-#include "cli/golden_speed_bench.hpp"
 #include "common/input_error.hpp"
+#include "engine/backend_registry.hpp"
 #include "rtl/rtl_variants.hpp"
 #include "stress/stress_cases.hpp"
+#include "stress/stress_command.hpp"
+#include "sweep/sweep_command.hpp"
 
 namespace {
 constexpr const char* kConfigHelp =
@@ -175,8 +183,11 @@ int main(int argc, char** argv) {
                                 : *stress  ? st.config
                                            : claims_config;
     if (plan) {
+      // Whether the input exists yet does not matter here: the driver
+      // remembers a plan that asked for nothing.
+      const bool plan_drives_rtl = drives_rtl || (*render && backend_named(ra.backend).has(kRunsRtl));
       std::vector<std::string> lines;
-      if (drives_rtl) {
+      if (plan_drives_rtl) {
         const Params p = load_params(config);
         if (const auto v = needed_rtl_variant(p)) lines.push_back(rtl_variant_plan_line(*v, p));
       }
@@ -197,6 +208,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.formatted().c_str());
     return 2;
+  } catch (const MissingPrerequisite& e) {
+    std::fprintf(stderr, "girtd: %s\n", e.what());
+    return kExitMissingPrerequisite;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "girtd: internal error: %s\n", e.what());
     return 3;

@@ -24,7 +24,7 @@
 #include "io/subprocess.hpp"
 #include "io/text_format.hpp"
 #include "claims/thesis_losses.hpp"
-#include "cli/commands.hpp"
+#include "claims/claims_command.hpp"
 #include "cli/config_loader.hpp"
 #include "layout/rtl_layout.hpp"
 #include "common/input_error.hpp"

@@ -18,7 +18,7 @@
 #include "claims/ep_precision.hpp"
 #include "cli/child_render.hpp"
 #include "rtl/rtl_variants.hpp"
-#include "cli/commands.hpp"
+#include "accuracy/accuracy_command.hpp"
 #include "io/output_set.hpp"
 #include "common/input_error.hpp"
 #include "io/image_compare.hpp"

@@ -1,4 +1,4 @@
-#include "cli/expectations.hpp"
+#include "bench/expectations.hpp"
 
 #include <cmath>
 #include <filesystem>

@@ -1,11 +1,11 @@
-#include "cli/rtl_speed_bench.hpp"
+#include "bench/rtl_speed_bench.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <vector>
 
-#include "cli/bench_stats.hpp"
+#include "bench/bench_stats.hpp"
 #include "cli/child_render.hpp"
 #include "io/trace_reader.hpp"
 #include "dda/dda_rtl.hpp"

@@ -1,4 +1,4 @@
-#include "cli/golden_speed_bench.hpp"
+#include "bench/golden_speed_bench.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "accuracy/llvmpipe_render.hpp"
-#include "cli/bench_stats.hpp"
+#include "bench/bench_stats.hpp"
 #include "cli/child_render.hpp"
 #include "io/trace_reader.hpp"
 

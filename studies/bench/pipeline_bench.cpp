@@ -1,4 +1,4 @@
-#include "cli/pipeline_bench.hpp"
+#include "bench/pipeline_bench.hpp"
 
 #include <unistd.h>
 
@@ -15,7 +15,7 @@
 #include "io/trace_reader.hpp"
 #include "io/workload_list.hpp"
 #include "cli/child_render.hpp"
-#include "cli/expectations.hpp"
+#include "bench/expectations.hpp"
 #include "io/sha256.hpp"
 #include "rtl/timing_comparison.hpp"
 

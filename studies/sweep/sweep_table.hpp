@@ -23,6 +23,12 @@ struct SweepSummary {
 // frames, else over the whole run.
 double judged_rate(const nlohmann::json& row);
 
+// Sets each point's on_front: valid, and no other valid point is at once
+// no dearer and no slower (min_mpixels_per_s), and better in one. The one
+// definition of the front: a sweep's tables and the campaign's
+// (girtd_campaign_front, studies/study_summary.py) both use it.
+void mark_pareto_front(nlohmann::json& points);
+
 SweepSummary summarize_sweep(const nlohmann::json& rows, const std::vector<std::string>& axes, size_t inputs);
 std::string sweep_csv(const nlohmann::json& rows, const std::vector<std::string>& axes);
 

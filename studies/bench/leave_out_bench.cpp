@@ -1,4 +1,4 @@
-#include "cli/leave_out_bench.hpp"
+#include "bench/leave_out_bench.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <vector>
 
-#include "cli/bench_stats.hpp"
+#include "bench/bench_stats.hpp"
 #include "cli/child_render.hpp"
 #include "io/image_compare.hpp"
 #include "io/png_io.hpp"

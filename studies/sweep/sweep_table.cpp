@@ -27,6 +27,18 @@ double judged_rate(const json& row) {
   return s.is_null() ? row.value("modeled_mpixels_per_s", 0.0) : s.get<double>();
 }
 
+void mark_pareto_front(json& points) {
+  for (json& p : points) {
+    bool dominated = !p["valid"].get<bool>();
+    for (const json& q : points)
+      if (!dominated && q["valid"].get<bool>() && q["point"] != p["point"]) {
+        const double qc = q["cost"], pc = p["cost"], qr = q["min_mpixels_per_s"], pr = p["min_mpixels_per_s"];
+        dominated = qc <= pc && qr >= pr && (qc < pc || qr > pr);
+      }
+    p["on_front"] = !dominated;
+  }
+}
+
 SweepSummary summarize_sweep(const json& rows, const std::vector<std::string>& axes, size_t inputs) {
   std::map<std::string, json> by_point;
   std::vector<std::string> order;
@@ -63,20 +75,10 @@ SweepSummary summarize_sweep(const json& rows, const std::vector<std::string>& a
       valid.push_back(p);
     }
   }
-  // The front: no other point is at once no dearer and no slower, and better in one.
-  for (const std::string& id : order) {
-    json& p = by_point[id];
-    bool dominated = !p["valid"].get<bool>();
-    for (const json& q : valid)
-      if (!dominated && q["point"] != p["point"]) {
-        const double qc = q["cost"], pc = p["cost"], qr = q["min_mpixels_per_s"], pr = p["min_mpixels_per_s"];
-        dominated = qc <= pc && qr >= pr && (qc < pc || qr > pr);
-      }
-    p["on_front"] = !dominated;
-  }
   SweepSummary s;
   s.points = json::array();
   for (const std::string& id : order) s.points.push_back(by_point[id]);
+  mark_pareto_front(s.points);
   std::vector<json> front, meeting;
   for (const json& p : s.points) {
     if (p["on_front"].get<bool>()) front.push_back(p);

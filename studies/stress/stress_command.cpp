@@ -1,14 +1,14 @@
-// girtd stress: generated extreme cases (sim/stress/stress_cases) on
+// girtd stress: generated extreme cases (studies/stress/stress_cases) on
 // reference, golden and rtl, each `render` in its own process (a crash or a
 // hang is a verdict, not the end of the run), judged by
-// sim/stress/stress_judge.
+// studies/stress/stress_judge.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "cli/commands.hpp"
+#include "stress/stress_command.hpp"
 #include "io/output_set.hpp"
 #include "common/input_error.hpp"
 #include "io/json_file.hpp"
@@ -141,7 +141,7 @@ int run_stress(const StressArgs& a) {
   }
   const StressBudget b = StressBudget::of(params);
   std::ostringstream head;
-  head << "# girtd stress\n\nBudget against the reference (sim/stress/stress_judge.hpp): edges within " << b.edge_px
+  head << "# girtd stress\n\nBudget against the reference (studies/stress/stress_judge.hpp): edges within " << b.edge_px
        << " px and fringes excused, depths within " << b.z_units << " units excused, elsewhere " << b.colour_lsb
        << " LSB per channel.\n\n";
   OutputSet out(a.out_dir);

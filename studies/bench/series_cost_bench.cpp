@@ -1,4 +1,4 @@
-#include "cli/series_cost_bench.hpp"
+#include "bench/series_cost_bench.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "cli/bench_stats.hpp"
+#include "bench/bench_stats.hpp"
 #include "cli/child_render.hpp"
 #include "engine/backend_registry.hpp"
 

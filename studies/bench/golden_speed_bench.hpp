@@ -3,7 +3,7 @@
 // opaque 200-pixel triangles (tools/make_opaque_trace.py, Q = 0, Z test),
 // golden's report.json `wall_s` (each render in its own process) against
 // llvmpipe's clear-to-glFinish time on the same triangles
-// (sim/accuracy/llvmpipe_render.*), in pairs run in turn; the ratio is the
+// (studies/accuracy/llvmpipe_render.*), in pairs run in turn; the ratio is the
 // median of the pairs'. Both count the triangles in memory to the final
 // colour and Z buffers, the clear included.
 #pragma once

@@ -25,7 +25,7 @@
 #include <thread>
 
 #include "cli/child_render.hpp"
-#include "cli/commands.hpp"
+#include "sweep/sweep_command.hpp"
 #include "io/output_set.hpp"
 #include "common/file_text.hpp"
 #include "common/input_error.hpp"
@@ -47,10 +47,15 @@ using json = nlohmann::json;
 
 namespace {
 
+// A sweep stopped by SIGINT or SIGTERM (128 + SIGINT, as a shell reports it).
+constexpr int kExitStopped = 130;
+
 // Set by SIGINT / SIGTERM: the workers take no more rows, and a render that
 // ends by a signal then was stopped, not crashed (its row is left for the rerun).
 std::atomic<bool> g_stopping{false};
 extern "C" void on_stop_signal(int) { g_stopping = true; }
+// Set when a render exits for want of an RTL variant (said once).
+std::atomic<bool> g_missing_variant{false};
 
 struct Task {
   const SweepPoint* point;
@@ -105,6 +110,14 @@ std::optional<json> run_task(const Task& t, const SweepSpec& spec, const fs::pat
     g_stopping = true;
     return std::nullopt;
   }
+  // A render that found an RTL variant missing is not the point's verdict:
+  // no row, so a run through the driver (which builds it) runs it again.
+  if (rc == kExitMissingPrerequisite) {
+    if (!g_missing_variant.exchange(true))
+      std::fprintf(stderr, "girtd sweep: a render needs an RTL variant that is not built (%s.log): run the sweep "
+                           "through tools/girtd, which builds it first\n", run.c_str());
+    return std::nullopt;
+  }
   if (r.is_null()) {
     row["valid"] = false;
     row["invalid"] = std::string(rc < 0 ? "the render crashed: " : "the render failed: ") + run.string() + ".log";
@@ -153,7 +166,8 @@ std::vector<const SweepPoint*> spot_check_points(const SweepSpec& spec, const st
   std::vector<const SweepPoint*> valid;
   for (const SweepPoint& p : points)
     if (p.invalid.empty()) valid.push_back(&p);
-  std::sort(valid.begin(), valid.end(), [](auto* a, auto* b) { return a->id < b->id; });
+  // Stable: of points that merge to one design the first stays, the one its tasks name.
+  std::stable_sort(valid.begin(), valid.end(), [](auto* a, auto* b) { return a->id < b->id; });
   valid.erase(std::unique(valid.begin(), valid.end(), [](auto* a, auto* b) { return a->id == b->id; }), valid.end());
   seeded_shuffle(valid, std::stoull(spec_sha.substr(0, 16), nullptr, 16));
   if (valid.size() > size_t(spec.spot_check)) valid.resize(size_t(spec.spot_check));
@@ -180,6 +194,10 @@ void spot_check(const Task& t, json& row, const SweepSpec& spec, const fs::path&
 
 // What a sweep is made of, read and checked before anything runs.
 struct SweepSetup {
+  SweepSetup() = default;
+  SweepSetup(SweepSetup&&) = default;  // a moved vector keeps its elements: Task::point stays valid
+  SweepSetup(const SweepSetup&) = delete;  // a copy's tasks would point into the original
+  SweepSetup& operator=(const SweepSetup&) = delete;
   SweepSpec spec;
   Params base;
   std::string out;
@@ -200,7 +218,8 @@ std::vector<std::string> timed_backends() {
 // written); "repeat" draws one-frame inputs that many times, and an
 // animation as it is. `warn`: say so (once: not again when planning).
 SweepSetup prepare_sweep(const SweepArgs& a, size_t slice, size_t slices, bool warn) {
-  SweepSetup s{read_sweep_spec(a.spec, timed_backends()), Params{}, "", {}, {}, {}, -1};
+  SweepSetup s;
+  s.spec = read_sweep_spec(a.spec, timed_backends());
   std::map<std::string, bool> repeat;
   s.base = Params::from_files(s.spec.base);
   for (const std::string& input : s.spec.inputs) {
@@ -312,8 +331,12 @@ int run_sweep(const SweepArgs& a) {
   if (!a.slice.empty()) return 0;  // a Slurm task: the gathering process writes the tables
   size_t missing = 0;
   for (const Task& t : tasks) missing += !fs::exists(dir / "rows" / (t.id + ".json"));
-  if (missing || g_stopping) {
+  if (g_stopping) {
     std::printf("\nstopped: %zu row(s) not run; run the sweep again to finish it\n", missing);
+    return kExitStopped;
+  }
+  if (missing) {
+    std::printf("\n%zu row(s) not run; run the sweep again to finish it\n", missing);
     return 1;
   }
 

@@ -1,0 +1,22 @@
+// girtd bench: speed and error tables of the back ends. Returns the process exit code (docs/interface.md):
+// 0 success, 1 a check failed, 2 bad input or usage (InputError).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cli/config_loader.hpp"
+
+namespace girtd {
+
+struct BenchArgs {
+  ConfigFiles config;
+  std::string out = "out/bench";
+  bool pipeline_only = false, leave_out_only = false, speed_only = false;
+  bool bless = false;          // rewrite the stored expectations from this run (cli/expectations.hpp)
+  bool option_matrix = false;  // the pipeline table under each memory-side option
+  std::vector<std::string> inputs;  // the pipeline table's (default: the sample workloads)
+};
+int run_bench(const BenchArgs& a);
+
+}  // namespace girtd
