@@ -33,6 +33,10 @@ constexpr const char* kQuietWarnings[] = {
 constexpr const char* kHarmlessErrors[] = {
     "Obj: Ignoring empty face",                       // an "f" with no corners
     "Obj: Separator unexpected in point statement",  // "p 1/2": a point, never drawn
+    "FBX: no material assigned to mesh, setting default material",  // materials are not used
+    "FBX: ignoring additional binormal layer",                       // nor binormals
+    "FBX: ignoring additional tangent layer",                        // nor tangents
+    "3DS: Skipping FOV animation track",                             // nor animations
 };
 
 // Warn messages that mean a value or a face is not what the file says.

@@ -17,7 +17,6 @@ Trace read_input(const std::string& path, std::optional<TraceLevel> level, const
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext == ".json") return read_scene(path, params);
     if (is_model_file(path)) return scene_from_model(path, params);
-    reject_other_model_formats(path);
   }
   return read_trace(path, level, params);
 }

@@ -13,12 +13,14 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <regex>
 #include <tuple>
 
 #include "common/input_error.hpp"
 #include "frontend/polygon_shape.hpp"
 #include "io/assimp_messages.hpp"
+#include "io/import_child.hpp"
 #include "io/model_precheck.hpp"
 #include "io/model_tokens.hpp"
 
@@ -33,12 +35,6 @@ std::string lower_extension(const std::string& path) {
   return e;
 }
 
-
-[[noreturn]] void fail_format(const std::string& path, const std::string& ext) {
-  fail(path, 0,
-       "model format '" + (ext.empty() ? std::string("(no extension)") : ext) +
-           "' is not read: OBJ, OFF, PLY and STL are (their counts are checked before import)");
-}
 
 // assimp's message, with "line N" turned into the error's line when present.
 [[noreturn]] void fail_assimp(const std::string& path, const Assimp::Importer& importer) {
@@ -141,12 +137,13 @@ class MeshBuilder {
     for (unsigned i = 0; i < node.mNumChildren; ++i) add(scene, *node.mChildren[i], m);
   }
 
-  Mesh take(uint64_t file_polygons) {
+  // `file_polygons`: what the pre-check counted (its formats only).
+  Mesh take(std::optional<uint64_t> file_polygons) {
     // Some damage reaches no log (sim/io/README.md): the count is the check.
-    if (faces_read_ != file_polygons)
+    if (file_polygons && faces_read_ != *file_polygons)
       fail(path_, 0,
            "assimp 5.2.5 returned " + std::to_string(faces_read_) + " polygons where the pre-check counted " +
-               std::to_string(file_polygons) + ": refused rather than drawn wrong");
+               std::to_string(*file_polygons) + ": refused rather than drawn wrong");
     if (mesh_.polygons.empty()) fail(path_, 0, "the model has no polygons (points and lines are not drawn)");
     return std::move(mesh_);
   }
@@ -189,16 +186,9 @@ class MeshBuilder {
   std::map<std::tuple<double, double, double>, int> index_;
 };
 
-}  // namespace
-
-bool is_model_file(const std::string& path) { return is_checked_model_format(lower_extension(path)); }
-
-void reject_other_model_formats(const std::string& path) {
-  const std::string e = lower_extension(path);
-  if (!e.empty() && !is_model_file(path) && Assimp::Importer().IsExtensionSupported(e)) fail_format(path, e);
-}
-
-Mesh import_model(const std::string& path, std::vector<std::string>& warnings) {
+// The file itself, then the pre-check where its format has one: the polygons
+// it counted, for checking what assimp returns against.
+std::optional<uint64_t> check_file(const std::string& path, std::vector<std::string>& warnings) {
   std::error_code ec;
   if (!fs::exists(path, ec)) fail(path, 0, "no such file");
   if (!fs::is_regular_file(path, ec)) fail(path, 0, "not a regular file");
@@ -207,22 +197,53 @@ Mesh import_model(const std::string& path, std::vector<std::string>& warnings) {
   if (size == 0) fail(path, 0, "empty file");
   if (!std::ifstream(path)) fail(path, 0, "cannot open file");
   const std::string ext = lower_extension(path);
-  if (!is_checked_model_format(ext)) fail_format(path, ext);
-  std::vector<std::string> found;  // the pre-check's first, then assimp's
-  const uint64_t file_polygons = precheck_model(path, ext, size, found);
+  if (!is_checked_model_format(ext)) return std::nullopt;
+  return precheck_model(path, ext, size, warnings);
+}
 
+// assimp, and the checks on what it returns.
+Mesh assimp_import(const std::string& path, std::optional<uint64_t> file_polygons, std::vector<std::string>& warnings) {
   // No aiProcess_Triangulate: polygons must reach the GIRTD triangulator.
   const unsigned flags = aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
   MessageLog log;
   Assimp::Importer importer;
-  importer.SetIOHandler(new OnlyTheModelFile(path));  // the importer owns it
+  // The pre-checked formats open their own file only (an OBJ's material
+  // library is trouble, above); the others open what they name (a glTF's
+  // buffers), inside the child's limits.
+  if (file_polygons) importer.SetIOHandler(new OnlyTheModelFile(path));  // the importer owns it
   const aiScene* scene = importer.ReadFile(path, flags);
   if (!scene || !scene->mRootNode) fail_assimp(path, importer);
   if (!log.first_error().empty()) fail(path, 0, "cannot read the model: " + log.first_error());
   MeshBuilder b(path);
   b.add(*scene, *scene->mRootNode, aiMatrix4x4());
   Mesh mesh = b.take(file_polygons);
-  for (const std::string& w : log.warnings()) found.push_back(path + ": " + w);
+  for (const std::string& w : log.warnings()) warnings.push_back(path + ": " + w);
+  return mesh;
+}
+
+}  // namespace
+
+bool is_model_file(const std::string& path) {
+  const std::string e = lower_extension(path);
+  return !e.empty() && (is_checked_model_format(e) || Assimp::Importer().IsExtensionSupported(e));
+}
+
+Mesh import_model_in_process(const std::string& path, std::vector<std::string>& warnings) {
+  std::vector<std::string> found;  // the pre-check's first, then assimp's
+  const std::optional<uint64_t> file_polygons = check_file(path, found);
+  Mesh mesh = assimp_import(path, file_polygons, found);
+  warnings.insert(warnings.end(), found.begin(), found.end());
+  return mesh;
+}
+
+Mesh import_model(const std::string& path, std::vector<std::string>& warnings) {
+  std::vector<std::string> found;
+  const std::optional<uint64_t> file_polygons = check_file(path, found);
+  Mesh mesh = import_in_child(
+      path, kImportLimits, [&](std::vector<std::string>& child_warnings) {
+        return assimp_import(path, file_polygons, child_warnings);
+      },
+      found);
   warnings.insert(warnings.end(), found.begin(), found.end());
   return mesh;
 }

@@ -72,8 +72,10 @@ inline bool parse_real(std::string_view t, double& value) { return read_real(t, 
 // Why assimp 5.2.5's fast_atof would read the real number `t` otherwise
 // than its text says, or "" when it reads it right: only decimal syntax
 // [+-]digits[.digits][(e|E)[+-]digits] (it stops at "0x", at a second '.'),
-// at most 15 digits after the point (it drops the rest), at most 18 before
-// it (its overflow test misses some wraps), and within float's range.
+// digits after the point past the 15th only where dropping them (it does)
+// moves the float it reads by more than one step (an exporter's round-trip
+// double such as 0.0009999999983333334 reads right), at most 18 digits
+// before it (its overflow test misses some wraps), and within float's range.
 inline std::string assimp_real_problem(std::string_view t) {
   size_t i = t.size() > 0 && (t[0] == '-' || t[0] == '+') ? 1 : 0;
   auto digits = [&]() {
@@ -82,9 +84,10 @@ inline std::string assimp_real_problem(std::string_view t) {
     return i - start;
   };
   const size_t whole = digits();
-  size_t fraction = 0;
+  size_t fraction = 0, fraction_start = 0;
   if (i < t.size() && t[i] == '.') {
     ++i;
+    fraction_start = i;
     fraction = digits();
   }
   if (whole + fraction == 0) return "is not a number";
@@ -95,9 +98,16 @@ inline std::string assimp_real_problem(std::string_view t) {
   }
   if (i != t.size()) return "is not a decimal number";
   if (whole > 18) return "has more than 18 digits before the point";
-  if (fraction > 15) return "has more than 15 digits after the point";
   double d = 0;
   if (!parse_real(t, d) || !(std::fabs(d) <= 3.4028234663852886e38)) return "is out of a float's range";
+  if (fraction > 15) {
+    const std::string kept = std::string(t.substr(0, fraction_start + 15)) + std::string(t.substr(fraction_start + fraction));
+    double dropped = 0;
+    parse_real(kept, dropped);
+    const float want = float(d), got = float(dropped);
+    if (want != got && std::nextafter(want, got) != got)
+      return "has more than 15 digits after the point; assimp 5.2.5 drops the rest and would read " + kept;
+  }
   return "";
 }
 

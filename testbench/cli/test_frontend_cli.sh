@@ -41,7 +41,7 @@ expect_bad bigface.off 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n10 0 1 2 0 1 2 0 1 2 0\
 # A 200-byte binary PLY whose face claims 10^8 indices: refused before assimp allocates for them.
 expect_bad hugelist.ply 'ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x80\x3f\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x80\x3f\x00\x00\x00\x00\x00\xe1\xf5\x05\x00\x00\x00\x00\x01\x00\x00\x00\x02\x00\x00\x00' 'hugelist.ply:@[0-9]+: element .face. 0 lists 100000000 values'
 expect_bad asciilist.ply 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n100000000 0 1 2\n' 'asciilist.ply:13: element .face. 0 lists 100000000 values'
-expect_bad model.3ds 'not read' 'model.3ds: model format .\.3ds. is not read'
+expect_bad model.3ds 'not read' 'model.3ds: cannot read the model: '
 expect_bad absurd.off 'OFF\n99999999999 1 0\n0 0 0\n' 'absurd.off:2: header claims 99999999999 vertices'
 expect_bad absurd.ply 'ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n' 'absurd.ply:3: header claims'
 expect_bad short.stl 'not a solid, not 84 bytes' 'short.stl:@[0-9]+: binary STL'

@@ -119,7 +119,7 @@ TEST_CASE("DDA DIR at a vertex: two negative distances of the same sign", "[dda]
   CHECK(t.pixels == expected);
 }
 
-TEST_CASE("DDApix as written skips the row of an outside start; the fix walks into it", "[dda]") {
+TEST_CASE("DDApix as written skips the row of an outside start, the fix walks into it", "[dda]") {
   // The walk-right triangle entered at (0,1), outside (D1 = -2).
   Params p = test::ecl_params();
   const DdaParams d = test::make_params(p, 0, 1, 0, 6, 3, Lin{1, -2, 0}, Lin{0, 1, 0}, Lin{-1, 1, 3});

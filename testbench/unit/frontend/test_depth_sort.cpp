@@ -16,7 +16,7 @@ std::vector<SortItem> items(std::initializer_list<double> keys) {
 
 }  // namespace
 
-TEST_CASE("depth sort: farthest first; an unchanged frame costs n - 1 comparisons", "[frontend]") {
+TEST_CASE("depth sort: farthest first, an unchanged frame costs n - 1 comparisons", "[frontend]") {
   DepthSorter s;
   auto a = items({10, 50, 30, 40, 20});
   s.sort(a);

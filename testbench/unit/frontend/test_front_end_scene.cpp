@@ -152,7 +152,7 @@ TEST_CASE("end to end: lit sphere and cube, eight pixels within 2 LSB", "[fronte
   }
 }
 
-TEST_CASE("front end: culling removes the cube's back half; counts add up", "[frontend]") {
+TEST_CASE("front end: culling removes the cube's back half, counts add up", "[frontend]") {
   WorldFrame f = scene();
   f.cull_back_faces = true;
   WorldFrame cube_only = f;

@@ -3,6 +3,7 @@
 // polygons exactly as the file has them; an error refuses the model.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -218,4 +219,17 @@ TEST_CASE("model messages: a scene passes on its models' warnings, once per mode
   const Trace t = read_scene(scene, Params::defaults());
   REQUIRE(t.warnings.size() == 1);
   CHECK(t.warnings[0].rfind(obj + ":1: material library 'gone.mtl' not found", 0) == 0);
+}
+
+TEST_CASE("model messages: a round-trip double is read, digits assimp drops are refused only where they count", "[frontend]") {
+  // An exporter's doubles: assimp drops the digits past the 15th, and the float it reads is the same.
+  const Imported m = import(temp_file("roundtrip.obj", "v 0.0009999999983333334 0 0\nv 1.0000000000000000001 0 0\n"
+                                                       "v 0 0.99999999999999999 0\nf 1 2 3\n"));
+  CHECK(m.mesh.polygons.size() == 1);
+  CHECK(m.warnings.empty());
+  CHECK(std::abs(m.mesh.positions[0].x - 0.0009999999983333334) < 3e-10);  // a float's step there: 1.2e-10
+  // 1.2e-16 in fixed notation: past the 15th digit is all there is.
+  CHECK(error_of([] { import(temp_file("tiny.obj", "v 0.00000000000000012 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); }) ==
+        "/tmp/girtd_frontend_test_tiny.obj:1: '0.00000000000000012' has more than 15 digits after the point; assimp "
+        "5.2.5 drops the rest and would read 0.000000000000000 (assimp 5.2.5 would misread it)");
 }

@@ -1,0 +1,229 @@
+#include "io/import_child.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <type_traits>
+#include <new>
+#include <stdexcept>
+
+#include "common/input_error.hpp"
+
+namespace girtd {
+
+namespace {
+
+// The answer's bytes: a tag, then fixed-width numbers and length-prefixed
+// strings (both ends are this executable: no byte order to agree on).
+class Writer {
+ public:
+  template <class T>
+  void put(const T& v) {
+    static_assert(std::is_arithmetic_v<T>, "numbers only: they are sent as their bytes");
+    out_.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  void put_text(const std::string& s) {
+    put(uint64_t(s.size()));
+    out_ += s;
+  }
+  const std::string& bytes() const { return out_; }
+
+ private:
+  std::string out_;
+};
+
+class Reader {
+ public:
+  explicit Reader(const std::string& in) : in_(in) {}
+  template <class T>
+  T get() {
+    static_assert(std::is_arithmetic_v<T>, "numbers only: they are sent as their bytes");
+    T v;
+    need(sizeof v);
+    std::memcpy(&v, in_.data() + at_, sizeof v);
+    at_ += sizeof v;
+    return v;
+  }
+  std::string get_text() {
+    const uint64_t n = get<uint64_t>();
+    need(n);
+    std::string s = in_.substr(at_, n);
+    at_ += n;
+    return s;
+  }
+
+ private:
+  void need(uint64_t n) const {
+    if (n > in_.size() - at_) throw std::runtime_error("the importer's answer is cut short");
+  }
+  const std::string& in_;
+  size_t at_ = 0;
+};
+
+constexpr char kMeshTag = 'M', kErrorTag = 'E';
+
+std::string answer(const ImportLimits& limits, const std::function<Mesh(std::vector<std::string>&)>& import) {
+  Writer w;
+  try {
+    std::vector<std::string> warnings;
+    const Mesh mesh = import(warnings);
+    w.put(kMeshTag);
+    w.put(uint64_t(mesh.positions.size()));
+    for (const Vec3& p : mesh.positions) {
+      w.put(p.x);
+      w.put(p.y);
+      w.put(p.z);
+    }
+    w.put(uint64_t(mesh.polygons.size()));
+    for (const std::vector<int>& poly : mesh.polygons) {
+      w.put(uint64_t(poly.size()));
+      for (int i : poly) w.put(i);
+    }
+    w.put(uint64_t(warnings.size()));
+    for (const std::string& s : warnings) w.put_text(s);
+    return w.bytes();
+  } catch (const InputError& e) {
+    w = Writer();
+    w.put(kErrorTag);
+    w.put(int64_t(e.line()));
+    w.put(int64_t(e.offset() ? int64_t(*e.offset()) : -1));
+    w.put_text(e.what());
+  } catch (const std::bad_alloc&) {
+    w = Writer();
+    w.put(kErrorTag);
+    w.put(int64_t(0));
+    w.put(int64_t(-1));
+    w.put_text("cannot read the model: the importer ran out of memory (its limit: " +
+               std::to_string(limits.memory_bytes >> 20) + " MiB)");
+  } catch (const std::exception& e) {
+    w = Writer();
+    w.put(kErrorTag);
+    w.put(int64_t(0));
+    w.put(int64_t(-1));
+    w.put_text(std::string("cannot read the model: the importer failed: ") + e.what());
+  }
+  return w.bytes();
+}
+
+bool write_all(int fd, const std::string& s) {
+  for (size_t at = 0; at < s.size();) {
+    const ssize_t n = ::write(fd, s.data() + at, s.size() - at);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    at += size_t(n);
+  }
+  return true;
+}
+
+[[noreturn]] void run_child(int fd, const ImportLimits& limits,
+                            const std::function<Mesh(std::vector<std::string>&)>& import) {
+#if !defined(__SANITIZE_ADDRESS__)
+  const rlimit as{limits.memory_bytes, limits.memory_bytes};
+  setrlimit(RLIMIT_AS, &as);
+#endif
+  signal(SIGINT, SIG_DFL);  // a stop of the render stops the import too
+  // Some importers print (OpenGEX's parser on stdout): the answer is the pipe's.
+  if (const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC); null >= 0) {
+    dup2(null, STDOUT_FILENO);
+    dup2(null, STDERR_FILENO);
+  }
+  const bool sent = write_all(fd, answer(limits, import));
+  ::close(fd);
+  _exit(sent ? 0 : 1);
+}
+
+[[noreturn]] void refuse(const std::string& path, const std::string& what) {
+  throw InputError(path, 0, "cannot read the model: the importer " + what);
+}
+
+}  // namespace
+
+Mesh import_in_child(const std::string& path, const ImportLimits& limits,
+                     const std::function<Mesh(std::vector<std::string>& warnings)>& import,
+                     std::vector<std::string>& warnings) {
+  int fds[2];
+  if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error("cannot make a pipe for the model importer");
+  std::fflush(stdout);
+  std::fflush(stderr);
+  const pid_t pid = fork();
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw std::runtime_error("cannot start the model importer's process");
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    run_child(fds[1], limits, import);
+  }
+  ::close(fds[1]);
+  // Read until the child closes its end, or until the time is up.
+  std::string bytes;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limits.seconds);
+  bool timed_out = false;
+  char buf[1 << 16];
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) {
+      timed_out = true;
+      break;
+    }
+    pollfd p{fds[0], POLLIN, 0};
+    const int ready = poll(&p, 1, int(std::min<int64_t>(left.count(), 1000)));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready <= 0) continue;
+    const ssize_t n = ::read(fds[0], buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;  // the child closed its end
+    bytes.append(buf, size_t(n));
+  }
+  ::close(fds[0]);
+  if (timed_out) kill(pid, SIGKILL);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (timed_out)
+    refuse(path, "took longer than its limit of " + std::to_string(int(limits.seconds)) + " s (stopped)");
+  if (WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    const bool stopped = sig == SIGINT || sig == SIGTERM || sig == SIGHUP;
+    refuse(path, std::string(stopped ? "was stopped (signal " : "crashed (signal ") + std::to_string(sig) + ", " +
+                     strsignal(sig) + ")");
+  }
+  // Exit 0 once the whole answer is written: anything else is cut short.
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || bytes.empty())
+    refuse(path, "ended without a whole answer (exit " + std::to_string(WEXITSTATUS(status)) + ")");
+  Reader r(bytes);
+  if (r.get<char>() == kErrorTag) {
+    const int64_t line = r.get<int64_t>(), offset = r.get<int64_t>();
+    const std::string what = r.get_text();
+    if (offset >= 0) throw InputError::at_byte(path, uint64_t(offset), what);
+    throw InputError(path, int(line), what);
+  }
+  Mesh mesh;
+  mesh.positions.resize(r.get<uint64_t>());
+  for (Vec3& p : mesh.positions) {
+    p.x = r.get<double>();
+    p.y = r.get<double>();
+    p.z = r.get<double>();
+  }
+  mesh.polygons.resize(r.get<uint64_t>());
+  for (std::vector<int>& poly : mesh.polygons) {
+    poly.resize(r.get<uint64_t>());
+    for (int& i : poly) i = r.get<int>();
+  }
+  const uint64_t count = r.get<uint64_t>();
+  for (uint64_t i = 0; i < count; ++i) warnings.push_back(r.get_text());
+  return mesh;
+}
+
+}  // namespace girtd

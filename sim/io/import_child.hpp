@@ -1,0 +1,25 @@
+// A model import in a child process (fork): a crash, an exhausted memory or
+// a hang inside an importer becomes one InputError line naming the file,
+// and this process goes on. The child's address space and the time it may
+// take are bounded (ImportLimits); its answer (the mesh, its warnings, or
+// the error) comes back through a pipe. The child leaves by _exit only: no
+// exception, destructor or atexit handler of this process runs in it.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "frontend/mesh.hpp"
+#include "io/model_import.hpp"
+
+namespace girtd {
+
+// Runs `import` in a child under `limits`; returns its mesh and appends its
+// warnings, or throws its InputError (or "FILE: cannot read the model: the
+// importer ..." when it crashed, ran out of memory or time).
+Mesh import_in_child(const std::string& path, const ImportLimits& limits,
+                     const std::function<Mesh(std::vector<std::string>& warnings)>& import,
+                     std::vector<std::string>& warnings);
+
+}  // namespace girtd
