@@ -24,6 +24,8 @@ MANIFEST = RESULTS / "recorded.json"
 # inputs it ran (a result of the report page only the page's code).
 SIMULATOR = ["sim", "models", "hw", "config", "traces", "studies", "cmake", "CMakeLists.txt"]
 MEASURES = {"report_page": ["sim/report"]}
+# What a result does not depend on in the folders it measures: their documents.
+NOT_SOURCES = ":(exclude,glob)**/*.md"
 # Not results: this folder's own documents.
 NOT_RESULTS = {"README.md", "recorded.json"}
 
@@ -45,7 +47,7 @@ def stamp(path, command):
     path = str(pathlib.Path(path).resolve().relative_to(RESULTS.resolve()))
     manifest = load()
     sources = measures(path)
-    dirty = bool(git("status", "--porcelain", "--", *sources))
+    dirty = bool(git("status", "--porcelain", "--", *sources, NOT_SOURCES))
     manifest[path] = {"commit": git("rev-parse", "HEAD"), "uncommitted_changes": dirty,
                       "date": datetime.date.today().isoformat(), "command": command, "measures": sources}
     MANIFEST.write_text(json.dumps(dict(sorted(manifest.items())), indent=2) + "\n")
@@ -86,9 +88,10 @@ def check():
         if not entry:
             stale.append("results/%s: no commit recorded (record it again: tools/girtd docs --record)" % path)
             continue
-        later = git("rev-list", "--count", entry["commit"] + "..HEAD", "--", *entry["measures"])
+        sources = list(entry["measures"]) + [NOT_SOURCES]
+        later = git("rev-list", "--count", entry["commit"] + "..HEAD", "--", *sources)
         if int(later) or entry["uncommitted_changes"]:
-            last = git("log", "-1", "--format=%h %cs", "--", *entry["measures"])
+            last = git("log", "-1", "--format=%h %cs", "--", *sources)
             stale.append("results/%s: measured at %s (%s); %s later commit(s) change %s, the last %s" % (
                 path, entry["commit"][:7], entry["date"], later, " ".join(entry["measures"]), last))
     for line in stale:
