@@ -252,7 +252,7 @@ class Scene:
 
     def add_model(self, path, material=None, name=None, crease_deg=None, scale=None, rotate_deg=None,
                   translate=None):
-        """A model file (OBJ, OFF, PLY, STL) placed in the scene. Returns the model's name."""
+        """A model file (any format assimp reads) placed in the scene. Returns the model's name."""
         model = {"file": os.path.abspath(os.fspath(path))}
         if crease_deg is not None:
             model["crease_deg"] = crease_deg

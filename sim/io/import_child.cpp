@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -18,6 +19,15 @@
 #include <stdexcept>
 
 #include "common/input_error.hpp"
+
+// ASan reserves terabytes of address space: no limit on it there.
+#if defined(__SANITIZE_ADDRESS__)
+#define GIRTD_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define GIRTD_ASAN 1
+#endif
+#endif
 
 namespace girtd {
 
@@ -53,6 +63,12 @@ class Reader {
     std::memcpy(&v, in_.data() + at_, sizeof v);
     at_ += sizeof v;
     return v;
+  }
+  // A count of items of at least `item_bytes` each: no more than the bytes left hold.
+  uint64_t get_count(uint64_t item_bytes) {
+    const uint64_t n = get<uint64_t>();
+    if (n > (in_.size() - at_) / item_bytes) throw std::runtime_error("the importer's answer is cut short");
+    return n;
   }
   std::string get_text() {
     const uint64_t n = get<uint64_t>();
@@ -104,7 +120,7 @@ std::string answer(const ImportLimits& limits, const std::function<Mesh(std::vec
     w.put(int64_t(0));
     w.put(int64_t(-1));
     w.put_text("cannot read the model: the importer ran out of memory (its limit: " +
-               std::to_string(limits.memory_bytes >> 20) + " MiB)");
+               std::to_string(limits.memory_bytes >> 20) + " MiB more than the process held)");
   } catch (const std::exception& e) {
     w = Writer();
     w.put(kErrorTag);
@@ -125,13 +141,40 @@ bool write_all(int fd, const std::string& s) {
   return true;
 }
 
-[[noreturn]] void run_child(int fd, const ImportLimits& limits,
+// The address space this process holds now (the parent's, inherited).
+uint64_t address_space_bytes() {
+  uint64_t pages = 0;
+  if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(f, "%lu", &pages) != 1) pages = 0;
+    std::fclose(f);
+  }
+  return pages * uint64_t(sysconf(_SC_PAGESIZE));
+}
+
+[[noreturn]] void run_child(int fd, pid_t parent, const ImportLimits& limits,
                             const std::function<Mesh(std::vector<std::string>&)>& import) {
-#if !defined(__SANITIZE_ADDRESS__)
-  const rlimit as{limits.memory_bytes, limits.memory_bytes};
+  // Never outlive the parent, nor the limit (a file that names a FIFO blocks
+  // in the importer: the parent's deadline cannot reach a child it left).
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() != parent) _exit(1);
+  alarm(unsigned(limits.seconds) + 5);
+  // Only the answer's pipe stays open: another thread's import must see its
+  // own pipe close when its child ends, not wait for this one.
+  if (fd != 3) {
+    dup2(fd, 3);
+    fd = 3;
+  }
+  close_range(4, ~0U, 0);
+#if !defined(GIRTD_ASAN)
+  // The limit is on what the import adds to what the child inherited.
+  const uint64_t want = address_space_bytes() + limits.memory_bytes;
+  rlimit as{};
+  getrlimit(RLIMIT_AS, &as);
+  as.rlim_cur = as.rlim_max == RLIM_INFINITY ? want : std::min<uint64_t>(want, as.rlim_max);
   setrlimit(RLIMIT_AS, &as);
 #endif
   signal(SIGINT, SIG_DFL);  // a stop of the render stops the import too
+  signal(SIGPIPE, SIG_DFL);  // a parent gone: end here
   // Some importers print (OpenGEX's parser on stdout): the answer is the pipe's.
   if (const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC); null >= 0) {
     dup2(null, STDOUT_FILENO);
@@ -152,18 +195,20 @@ Mesh import_in_child(const std::string& path, const ImportLimits& limits,
                      const std::function<Mesh(std::vector<std::string>& warnings)>& import,
                      std::vector<std::string>& warnings) {
   int fds[2];
-  if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error("cannot make a pipe for the model importer");
+  if (pipe2(fds, O_CLOEXEC) != 0) refuse(path, std::string("could not start: no pipe (") + strerror(errno) + ")");
   std::fflush(stdout);
   std::fflush(stderr);
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) {
+    const int err = errno;
     ::close(fds[0]);
     ::close(fds[1]);
-    throw std::runtime_error("cannot start the model importer's process");
+    refuse(path, std::string("could not start: no process (") + strerror(err) + ")");
   }
   if (pid == 0) {
     ::close(fds[0]);
-    run_child(fds[1], limits, import);
+    run_child(fds[1], parent, limits, import);
   }
   ::close(fds[1]);
   // Read until the child closes its end, or until the time is up.
@@ -189,8 +234,12 @@ Mesh import_in_child(const std::string& path, const ImportLimits& limits,
   ::close(fds[0]);
   if (timed_out) kill(pid, SIGKILL);
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  pid_t waited;
+  while ((waited = waitpid(pid, &status, 0)) < 0 && errno == EINTR) {
   }
+  // Not seen (SIGCHLD ignored by the host: the child reaped itself): only a
+  // whole answer, parsed below, counts.
+  if (waited != pid) status = 0;
   if (timed_out)
     refuse(path, "took longer than its limit of " + std::to_string(int(limits.seconds)) + " s (stopped)");
   if (WIFSIGNALED(status)) {
@@ -202,27 +251,35 @@ Mesh import_in_child(const std::string& path, const ImportLimits& limits,
   // Exit 0 once the whole answer is written: anything else is cut short.
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || bytes.empty())
     refuse(path, "ended without a whole answer (exit " + std::to_string(WEXITSTATUS(status)) + ")");
-  Reader r(bytes);
-  if (r.get<char>() == kErrorTag) {
-    const int64_t line = r.get<int64_t>(), offset = r.get<int64_t>();
-    const std::string what = r.get_text();
-    if (offset >= 0) throw InputError::at_byte(path, uint64_t(offset), what);
-    throw InputError(path, int(line), what);
-  }
   Mesh mesh;
-  mesh.positions.resize(r.get<uint64_t>());
-  for (Vec3& p : mesh.positions) {
-    p.x = r.get<double>();
-    p.y = r.get<double>();
-    p.z = r.get<double>();
+  std::vector<std::string> said;
+  try {
+    Reader r(bytes);
+    if (r.get<char>() == kErrorTag) {
+      const int64_t line = r.get<int64_t>(), offset = r.get<int64_t>();
+      const std::string what = r.get_text();
+      if (offset >= 0) throw InputError::at_byte(path, uint64_t(offset), what);
+      throw InputError(path, int(line), what);
+    }
+    mesh.positions.resize(r.get_count(3 * sizeof(double)));
+    for (Vec3& p : mesh.positions) {
+      p.x = r.get<double>();
+      p.y = r.get<double>();
+      p.z = r.get<double>();
+    }
+    mesh.polygons.resize(r.get_count(sizeof(uint64_t)));
+    for (std::vector<int>& poly : mesh.polygons) {
+      poly.resize(r.get_count(sizeof(int)));
+      for (int& i : poly) i = r.get<int>();
+    }
+    const uint64_t count = r.get_count(sizeof(uint64_t));
+    for (uint64_t i = 0; i < count; ++i) said.push_back(r.get_text());
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception&) {
+    refuse(path, "ended without a whole answer");
   }
-  mesh.polygons.resize(r.get<uint64_t>());
-  for (std::vector<int>& poly : mesh.polygons) {
-    poly.resize(r.get<uint64_t>());
-    for (int& i : poly) i = r.get<int>();
-  }
-  const uint64_t count = r.get<uint64_t>();
-  for (uint64_t i = 0; i < count; ++i) warnings.push_back(r.get_text());
+  warnings.insert(warnings.end(), said.begin(), said.end());
   return mesh;
 }
 

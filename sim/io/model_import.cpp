@@ -45,6 +45,10 @@ std::string lower_extension(const std::string& path) {
   if (std::regex_search(msg, m, std::regex("[Ll]ine\\s*:?\\s*(\\d{1,9})")) && read_integer(m.str(1), at) == NumberRead::kOk)
     line = int(at);
   while (!msg.empty() && std::isspace(static_cast<unsigned char>(msg.back()))) msg.pop_back();
+  // assimp catches an allocation that failed under the child's limit itself.
+  if (msg.find("bad_alloc") != std::string::npos)
+    fail(path, 0, "cannot read the model: the importer ran out of memory (its limit: " +
+                      std::to_string(kImportLimits.memory_bytes >> 20) + " MiB more than the process held)");
   fail(path, line, "cannot read the model: " + (msg.empty() ? std::string("unknown format or empty file") : msg));
 }
 
@@ -225,7 +229,11 @@ Mesh assimp_import(const std::string& path, std::optional<uint64_t> file_polygon
 
 bool is_model_file(const std::string& path) {
   const std::string e = lower_extension(path);
-  return !e.empty() && (is_checked_model_format(e) || Assimp::Importer().IsExtensionSupported(e));
+  // assimp's RAW format (a text dump of numbers) would take a headerless
+  // trace named .raw without a word: such a file stays a trace (--level);
+  // a RAW model can still be named by a scene's "file".
+  if (e.empty() || e == ".raw") return false;
+  return is_checked_model_format(e) || Assimp::Importer().IsExtensionSupported(e);
 }
 
 Mesh import_model_in_process(const std::string& path, std::vector<std::string>& warnings) {

@@ -44,7 +44,8 @@ Mesh import_model(const std::string& path, std::vector<std::string>& warnings);
 // call it, so the fuzzer sees the importer's coverage).
 Mesh import_model_in_process(const std::string& path, std::vector<std::string>& warnings);
 
-// By extension (any case): a format assimp reads.
+// By extension (any case): a format assimp reads, but .raw (a headerless
+// trace may be named so; a scene's "file" still imports a RAW model).
 bool is_model_file(const std::string& path);
 
 }  // namespace girtd

@@ -73,8 +73,8 @@ inline bool parse_real(std::string_view t, double& value) { return read_real(t, 
 // than its text says, or "" when it reads it right: only decimal syntax
 // [+-]digits[.digits][(e|E)[+-]digits] (it stops at "0x", at a second '.'),
 // digits after the point past the 15th only where dropping them (it does)
-// moves the float it reads by more than one step (an exporter's round-trip
-// double such as 0.0009999999983333334 reads right), at most 18 digits
+// leaves the float it reads as it is (an exporter's round-trip double such
+// as 0.0009999999983333334 reads right), at most 18 digits
 // before it (its overflow test misses some wraps), and within float's range.
 inline std::string assimp_real_problem(std::string_view t) {
   size_t i = t.size() > 0 && (t[0] == '-' || t[0] == '+') ? 1 : 0;
@@ -105,7 +105,7 @@ inline std::string assimp_real_problem(std::string_view t) {
     double dropped = 0;
     parse_real(kept, dropped);
     const float want = float(d), got = float(dropped);
-    if (want != got && std::nextafter(want, got) != got)
+    if (want != got)
       return "has more than 15 digits after the point; assimp 5.2.5 drops the rest and would read " + kept;
   }
   return "";

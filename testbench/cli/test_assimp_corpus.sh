@@ -34,7 +34,8 @@ while IFS= read -r -d '' f; do
       # The reason without the file's name and place: what the refusals have in common.
       line=$(cat "$TMP/err")
       line=${line#"$f"}
-      why=$(sed -E 's/^(:@?[0-9]+)?: //; s/[0-9]+/N/g' <<< "$line" | cut -c1-80)
+      why=$(sed -E 's/^(:@?[0-9]+)?: //; s/[0-9]+/N/g' <<< "$line")
+      (( ${#why} > 90 )) && why="$(cut -c1-90 <<< "$why" | sed -E 's/ [^ ]*$//') ..."
       if [[ "$why" == "not a GIRTD trace"* || "$why" == "empty trace"* ]]; then
         others[$folder]=$(( ${others[$folder]:-0} + 1 ))  # a texture, a buffer, a note: not a model format
       else
@@ -52,7 +53,7 @@ done < <(find "$CORPUS" -type f -print0 | sort -z)
 
 for rel in "${MUST_RENDER[@]}"; do
   for b in golden rtl; do
-    "$GIRTD" render "$CORPUS/$rel" --backend $b --out "$TMP/must_$b" --quiet 2> "$TMP/err" \
+    timeout 300 "$GIRTD" render "$CORPUS/$rel" --backend $b --out "$TMP/must_$b" --quiet 2> "$TMP/err" \
       && ok || bad "$rel: $b: $(head -c 300 "$TMP/err")"
   done
   px=$(jq .pixels_written "$TMP/must_golden/report.json" 2>/dev/null || echo 0)
@@ -66,13 +67,13 @@ done
   echo "| folder | model files | rendered | refused | the refusals' commonest reasons | other files |"
   echo "|---|---|---|---|---|---|"
   tr=0 tx=0 to=0
-  for folder in $(printf '%s\n' "${!rendered[@]}" "${!refused[@]}" "${!others[@]}" | sort -u); do
+  while IFS= read -r folder; do
     r=${rendered[$folder]:-0} x=${refused[$folder]:-0} o=${others[$folder]:-0}
     tr=$((tr + r)) tx=$((tx + x)) to=$((to + o))
     why=$(printf '%s' "${reasons[$folder]:-}" | sort | uniq -c | sort -rn | head -2 |
           sed -E 's/^ *([0-9]+) (.*)/`\2` (\1)/; s/\|/\\|/g' | paste -sd ';' - | sed 's/;/; /g')
     echo "| $folder | $((r + x)) | $r | $x | $why | $o |"
-  done
+  done < <(printf '%s\n' "${!rendered[@]}" "${!refused[@]}" "${!others[@]}" | sort -u)
   echo "| all | $((tr + tx)) | $tr | $tx | | $to |"
 } > "$out"
 cat "$out"

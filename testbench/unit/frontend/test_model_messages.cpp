@@ -228,6 +228,9 @@ TEST_CASE("model messages: a round-trip double is read, digits assimp drops are 
   CHECK(m.mesh.polygons.size() == 1);
   CHECK(m.warnings.empty());
   CHECK(std::abs(m.mesh.positions[0].x - 0.0009999999983333334) < 3e-10);  // a float's step there: 1.2e-10
+  // Just past the midpoint between 1 and the next float: without its last digits, below it (1.0).
+  CHECK(error_of([] { import(temp_file("step.obj", "v 1.0000000596046449 0 0\nv 0 0 0\nv 0 1 0\nf 1 2 3\n")); }).find(
+            "'1.0000000596046449' has more than 15 digits after the point") != std::string::npos);
   // 1.2e-16 in fixed notation: past the 15th digit is all there is.
   CHECK(error_of([] { import(temp_file("tiny.obj", "v 0.00000000000000012 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); }) ==
         "/tmp/girtd_frontend_test_tiny.obj:1: '0.00000000000000012' has more than 15 digits after the point; assimp "

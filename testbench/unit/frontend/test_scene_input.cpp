@@ -94,7 +94,7 @@ std::string binary_ply(bool big_endian, const std::vector<std::vector<uint32_t>>
 TEST_CASE("model import: every format assimp reads, by extension", "[frontend]") {
   for (const char* f : {"a/b/model.OBJ", "m.ply", "m.stl", "m.off", "m.3ds", "m.fbx", "m.gltf", "m.glb", "m.dae", "m.x"})
     CHECK(is_model_file(f));
-  for (const char* f : {"scene.trace", "frame.dda", "noextension", "m.png"}) CHECK_FALSE(is_model_file(f));
+  for (const char* f : {"scene.trace", "frame.dda", "noextension", "m.png", "thesis.raw"}) CHECK_FALSE(is_model_file(f));
   // Not a 3DS file: assimp's refusal, in the child, as the file's one line.
   CHECK(error_of([] { import_clean(temp_file("m.3ds", "xyz")); }).rfind("/tmp/girtd_frontend_test_m.3ds: cannot read the model: ", 0) == 0);
 }
