@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
       ->group("");
 
   RenderArgs ra;
-  CLI::App* render = app.add_subcommand("render", "render a model (OBJ, PLY, STL, OFF ...), a scene (JSON) or a trace");
+  CLI::App* render = app.add_subcommand("render", "render a model (any format assimp reads: OBJ, glTF, Collada, ...), a scene (JSON) or a trace");
   render->add_option("input", ra.input, "model, scene or trace file (traces/FORMAT.md)")->required();
   std::string backend_choices;
   for (const std::string& n : backend_names()) backend_choices += (backend_choices.empty() ? "" : " | ") + n;
@@ -173,21 +173,18 @@ int main(int argc, char** argv) {
   try {
     // A configuration the built RTL is not elaborated for runs in an RTL
     // variant (render on rtl; regress, bench, claims and stress drive the RTL
-    // too). A render whose input is missing fails at once, before any build.
-    const bool drives_rtl =
-        (*render && backend_named(ra.backend).has(kRunsRtl) && std::filesystem::exists(ra.input)) || *regress || *bench || *claims ||
-        *stress;
+    // too). A render whose input is missing fails at once, before any variant;
+    // its plan does not wait for the input (the driver remembers an empty plan).
+    const bool renders_on_rtl = *render && backend_named(ra.backend).has(kRunsRtl);
+    const bool campaign_drives_rtl = *regress || *bench || *claims || *stress;
     const ConfigFiles& config = *render ? ra.config
                                 : *regress ? rg.config
                                 : *bench   ? ba.config
                                 : *stress  ? st.config
                                            : claims_config;
     if (plan) {
-      // Whether the input exists yet does not matter here: the driver
-      // remembers a plan that asked for nothing.
-      const bool plan_drives_rtl = drives_rtl || (*render && backend_named(ra.backend).has(kRunsRtl));
       std::vector<std::string> lines;
-      if (plan_drives_rtl) {
+      if (renders_on_rtl || campaign_drives_rtl) {
         const Params p = load_params(config);
         if (const auto v = needed_rtl_variant(p)) lines.push_back(rtl_variant_plan_line(*v, p));
       }
@@ -197,7 +194,8 @@ int main(int argc, char** argv) {
       for (const std::string& line : lines) std::printf("%s\n", line.c_str());
       return 0;
     }
-    if (drives_rtl) run_in_rtl_variant_if_needed(load_params(config), argv);
+    if ((renders_on_rtl && std::filesystem::exists(ra.input)) || campaign_drives_rtl)
+      run_in_rtl_variant_if_needed(load_params(config), argv);
     if (*render) return run_render(ra);
     if (*claims) return run_claims(claims_config, claims_campaign);
     if (*bench) return run_bench(ba);

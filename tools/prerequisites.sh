@@ -93,24 +93,16 @@ plans_dir() {
 # the arguments and the configuration files' contents. Nothing when a
 # configuration is not a regular file (a pipe is read once: by the plan).
 plan_key() {
-  local bin=$1 next="" a
+  local bin=$1 next="" a configs=()
   shift
   for a in "$@"; do
-    if [[ "$next" == 1 && ! -f "$a" ]] || [[ "$a" == --config=* && ! -f "${a#--config=}" ]]; then return 0; fi
+    if [[ "$next" == 1 ]]; then configs+=("$a"); fi
     next=""
     if [[ "$a" == --config ]]; then next=1; fi
+    if [[ "$a" == --config=* ]]; then configs+=("${a#--config=}"); fi
   done
-  {
-    stat -L -c '%n %Y %s' "$bin"
-    printf '%s\n' "$PWD" "$@"
-    next=""
-    for a in "$@"; do
-      if [[ "$next" == 1 ]]; then cat "$a"; fi
-      next=""
-      if [[ "$a" == --config ]]; then next=1; fi
-      if [[ "$a" == --config=* ]]; then cat "${a#--config=}"; fi
-    done
-  } | sha256sum | cut -c1-32
+  for a in "${configs[@]}"; do [[ -f "$a" ]] || return 0; done
+  { stat -L -c '%n %Y %s' "$bin"; printf '%s\n' "$PWD" "$@"; cat "${configs[@]}" </dev/null; } | sha256sum | cut -c1-32
 }
 
 # prepare BIN COMMAND ARGS...: makes everything the plan lists but the array

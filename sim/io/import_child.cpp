@@ -88,6 +88,16 @@ class Reader {
 
 constexpr char kMeshTag = 'M', kErrorTag = 'E';
 
+// offset: a byte in a binary file, or -1.
+std::string error_answer(int64_t line, int64_t offset, const std::string& what) {
+  Writer w;
+  w.put(kErrorTag);
+  w.put(line);
+  w.put(offset);
+  w.put_text(what);
+  return w.bytes();
+}
+
 std::string answer(const ImportLimits& limits, const std::function<Mesh(std::vector<std::string>&)>& import) {
   Writer w;
   try {
@@ -109,26 +119,12 @@ std::string answer(const ImportLimits& limits, const std::function<Mesh(std::vec
     for (const std::string& s : warnings) w.put_text(s);
     return w.bytes();
   } catch (const InputError& e) {
-    w = Writer();
-    w.put(kErrorTag);
-    w.put(int64_t(e.line()));
-    w.put(int64_t(e.offset() ? int64_t(*e.offset()) : -1));
-    w.put_text(e.what());
+    return error_answer(e.line(), e.offset() ? int64_t(*e.offset()) : -1, e.what());
   } catch (const std::bad_alloc&) {
-    w = Writer();
-    w.put(kErrorTag);
-    w.put(int64_t(0));
-    w.put(int64_t(-1));
-    w.put_text("cannot read the model: the importer ran out of memory (its limit: " +
-               std::to_string(limits.memory_bytes >> 20) + " MiB more than the process held)");
+    return error_answer(0, -1, out_of_memory_message(limits));
   } catch (const std::exception& e) {
-    w = Writer();
-    w.put(kErrorTag);
-    w.put(int64_t(0));
-    w.put(int64_t(-1));
-    w.put_text(std::string("cannot read the model: the importer failed: ") + e.what());
+    return error_answer(0, -1, std::string("cannot read the model: the importer failed: ") + e.what());
   }
-  return w.bytes();
 }
 
 bool write_all(int fd, const std::string& s) {
@@ -190,6 +186,11 @@ uint64_t address_space_bytes() {
 }
 
 }  // namespace
+
+std::string out_of_memory_message(const ImportLimits& limits) {
+  return "cannot read the model: the importer ran out of memory (its limit: " +
+         std::to_string(limits.memory_bytes >> 20) + " MiB more than the process held)";
+}
 
 Mesh import_in_child(const std::string& path, const ImportLimits& limits,
                      const std::function<Mesh(std::vector<std::string>& warnings)>& import,

@@ -15,6 +15,10 @@
 
 namespace girtd {
 
+// The one line for an import that ran out of memory under `limits` (in the
+// child, or caught by assimp itself and passed on as its error text).
+std::string out_of_memory_message(const ImportLimits& limits);
+
 // Runs `import` in a child under `limits`; returns its mesh and appends its
 // warnings, or throws its InputError (or "FILE: cannot read the model: the
 // importer ..." when it crashed, ran out of memory or time).

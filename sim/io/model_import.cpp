@@ -46,9 +46,7 @@ std::string lower_extension(const std::string& path) {
     line = int(at);
   while (!msg.empty() && std::isspace(static_cast<unsigned char>(msg.back()))) msg.pop_back();
   // assimp catches an allocation that failed under the child's limit itself.
-  if (msg.find("bad_alloc") != std::string::npos)
-    fail(path, 0, "cannot read the model: the importer ran out of memory (its limit: " +
-                      std::to_string(kImportLimits.memory_bytes >> 20) + " MiB more than the process held)");
+  if (msg.find("bad_alloc") != std::string::npos) fail(path, 0, out_of_memory_message(kImportLimits));
   fail(path, line, "cannot read the model: " + (msg.empty() ? std::string("unknown format or empty file") : msg));
 }
 

@@ -3,8 +3,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
-
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -21,10 +19,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Which main build (and sanitizer mode) a variant links with; a variant
-// configured for another is configured again.
-std::string main_build_fields() {
-  return std::string(GIRTD_MAIN_BUILD_DIR) + "\t" + (GIRTD_MAIN_SANITIZED ? "1" : "0");
+// Which main build (and sanitizer mode) a variant links with, its fields
+// joined by `sep`; a variant configured for another is configured again.
+std::string main_build_fields(char sep) {
+  return std::string(GIRTD_MAIN_BUILD_DIR) + sep + (GIRTD_MAIN_SANITIZED ? "1" : "0");
 }
 
 // This executable's identity (modification time and size): a variant built
@@ -37,11 +35,7 @@ std::string build_id() {
 }
 
 // What the driver writes into DIR/built_for.txt once the build succeeded.
-std::string built_stamp() {
-  std::string s = main_build_fields() + " " + build_id();
-  std::replace(s.begin(), s.end(), '\t', ' ');
-  return s;
-}
+std::string built_stamp() { return main_build_fields(' ') + " " + build_id(); }
 
 std::string trimmed(std::string s) {
   while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
@@ -73,7 +67,7 @@ std::string rtl_variant_plan_line(const RtlVariant& v, const Params& p) {
     std::ofstream(tmp) << p.source.dump(2) << "\n";
     fs::rename(tmp, config);
   }
-  return "variant\t" + v.key + "\t" + v.dir + "\t" + v.why + "\t" + main_build_fields() + "\t" + build_id();
+  return "variant\t" + v.key + "\t" + v.dir + "\t" + v.why + "\t" + main_build_fields('\t') + "\t" + build_id();
 }
 
 void run_in_rtl_variant_if_needed(const Params& p, char** argv) {
