@@ -32,6 +32,7 @@ girtd::RenderRequest request_from(const json& r) {
   q.backend = r.value("backend", q.backend);
   q.config = config_layers(r.value("config", json::array()));
   q.level = r.value("level", std::string());
+  q.camera = r.value("camera", std::string());
   q.repeat = r.value("repeat", 1);
   q.keep_all_frames = r.value("keep_all_frames", false);
   q.prune = r.value("prune", true);

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   render->add_option("--out", ra.out_dir, "output directory (default out/<input name>/)");
   render->add_option("--level", ra.level, "level of a headerless trace: polygon | triangle | dda | thesis")
       ->check(CLI::IsMember({"polygon", "triangle", "dda", "thesis"}));
+  render->add_option("--camera", ra.camera, "a model file's camera by name (default: the file's first, else auto-framed)");
   render->add_option("--frames", ra.frames, "last | all (one PNG per frame)")
       ->check(CLI::IsMember({"last", "all"}))
       ->capture_default_str();

@@ -112,8 +112,10 @@ std::optional<FrontPolygon> FrontEndStages::light(size_t i) {
   }
   if (normals_.empty()) normals_ = vertex_normals(frame.polygons);
   const Surface& surface = frame.surfaces.at(static_cast<size_t>(poly.surface));
+  Surface corner = surface;  // the surface with a corner's own diffuse colour
   for (size_t k = 0; k < poly.p.size(); ++k) {
-    const LitVertex lit = light_vertex(surface, frame.lights, normals_[i][k], normalized(cam.centre - poly.p[k]));
+    if (!poly.colour.empty()) corner.r = poly.colour[k].r, corner.g = poly.colour[k].g, corner.b = poly.colour[k].b;
+    const LitVertex lit = light_vertex(corner, frame.lights, normals_[i][k], normalized(cam.centre - poly.p[k]));
     out.v.push_back({poly.p[k], lit.r, lit.g, lit.b, lit.t, false});
   }
   return out;

@@ -34,7 +34,9 @@ SurfaceGroups surface_groups(const Mesh& mesh, double crease_deg) {
       auto [it, fresh] = edge_owner.emplace(std::make_pair(a, b), i);
       if (fresh) continue;
       const size_t j = it->second;
-      if (dot(normal[i], normal[j]) >= min_cos) parent[find(i)] = find(j);
+      // Two materials are two surfaces, however smooth the edge between them.
+      const bool same_material = mesh.material.empty() || mesh.material[i] == mesh.material[j];
+      if (same_material && dot(normal[i], normal[j]) >= min_cos) parent[find(i)] = find(j);
     }
   }
   SurfaceGroups g;

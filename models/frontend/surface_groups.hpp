@@ -2,7 +2,8 @@
 // that share an edge join one surface when their normals differ by at most
 // `crease_deg`. A cube (90 deg edges) becomes 6 flat surfaces with the
 // default crease, a finely tessellated sphere one smooth surface; 180 makes
-// every connected piece smooth, 0 every polygon flat.
+// every connected piece smooth, 0 every polygon flat. Polygons of different
+// materials (Mesh::material) never share a surface.
 #pragma once
 
 #include <vector>

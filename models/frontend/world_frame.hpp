@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "frontend/mesh.hpp"
 #include "frontend/vec3.hpp"
 
 namespace girtd {
@@ -51,6 +52,9 @@ struct WorldPolygon {
   int surface = 0;
   std::vector<Vec3> p;  // counter-clockwise seen from the front (outside)
   int source_line = 0;  // where it came from, for error messages
+  // Empty, or one per corner: the corner's diffuse colour in place of the
+  // surface's R, G, B (a model's vertex colours or texture stand-in).
+  std::vector<CornerColour> colour;
 };
 
 // Consecutive polygons culled together (a scene's model): config

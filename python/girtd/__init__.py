@@ -95,12 +95,13 @@ def merged_config(config=None):
 
 
 def render(input, backend="golden", config=None, repeat=1, frames="last", level=None, prune=True, aa=None,
-           sample_timing=None, dump=None, progress=False, print_warnings=True):
+           sample_timing=None, dump=None, progress=False, print_warnings=True, camera=None):
     """Renders `input` (a path, or a Scene) on `backend`; returns a Report.
 
     The options are `girtd render`'s: frames "last" or "all" (Report.frames),
     level for a trace without a header, prune=False for --no-prune, aa for
-    --aa, sample_timing, dump "LEVEL=FILE". The report's "warnings" are
+    --aa, sample_timing, dump "LEVEL=FILE", camera for --camera (a model
+    file's camera by name). The report's "warnings" are
     printed on sys.stderr after the render (a notebook shows them) unless
     print_warnings=False.
     """
@@ -114,7 +115,8 @@ def render(input, backend="golden", config=None, repeat=1, frames="last", level=
         request["scene"] = input.document()
     else:
         request["input"] = os.fspath(input)
-    for key, value in (("level", level), ("aa", aa), ("sample_timing", sample_timing), ("dump", dump)):
+    for key, value in (("level", level), ("aa", aa), ("sample_timing", sample_timing), ("dump", dump),
+                       ("camera", camera)):
         if value is not None:
             request[key] = value
     if _needs_rtl_variant(backend, request["config"]):
@@ -153,7 +155,7 @@ def _render_with_executable(request):
                     json.dump(layer["patch"], f)
             args += ["--config", path]
         for key, flag in (("level", "--level"), ("aa", "--aa"), ("sample_timing", "--sample-timing"),
-                          ("dump", "--dump")):
+                          ("dump", "--dump"), ("camera", "--camera")):
             if key in request:
                 args += [flag, str(request[key])]
         if not request["prune"]:

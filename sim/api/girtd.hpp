@@ -34,6 +34,7 @@ struct RenderRequest {
   std::string backend = "golden";  // a registry name (backend_list())
   std::vector<ConfigLayer> config;  // merged over the built-in one in order
   std::string level;                 // a trace without a header: its level
+  std::string camera;                // a model file's camera by name ("": the file's first, else auto)
   int repeat = 1;                    // a one-frame input drawn N times
   bool keep_all_frames = false;      // RenderResult::per_frame
   bool prune = true;                 // leave out what cannot change the picture

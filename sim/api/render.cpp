@@ -95,7 +95,8 @@ LoadedInput load_input(const RenderRequest& a, const Params& params, bool untime
   std::optional<TraceLevel> level;
   if (!a.level.empty()) level = parse_level(a.level, "--level", 0);
   LoadedInput in;
-  Trace t = a.scene ? read_scene_document(*a.scene, a.input, params) : read_input(a.input, level, params);
+  Trace t = a.scene ? read_scene_document(*a.scene, a.input, params, a.camera)
+                    : read_input(a.input, level, params, a.camera);
   if (a.repeat > 1) {  // a static input as N frames: the pipeline overlaps them
     if (t.frames.size() != 1)
       throw InputError("--repeat", 0, a.input + " has " + std::to_string(t.frames.size()) +

@@ -17,6 +17,7 @@ struct RenderArgs {
   std::string backend = "golden";
   std::string out_dir;  // default out/<input stem>
   std::string level;
+  std::string camera;  // --camera: a model file's camera by name
   std::string frames = "last";
   std::string wave, wave_window;
   std::vector<std::string> wave_scopes;

@@ -54,6 +54,7 @@ int run_render(const RenderArgs& a) {
   request.backend = a.backend;
   for (const std::string& f : a.config) request.config.push_back({f, nullptr, f});
   request.level = a.level;
+  request.camera = a.camera;
   request.repeat = a.repeat;
   request.keep_all_frames = a.frames == "all";
   request.prune = !a.no_prune;

@@ -86,7 +86,7 @@ class Reader {
   size_t at_ = 0;
 };
 
-constexpr char kMeshTag = 'M', kErrorTag = 'E';
+constexpr char kModelTag = 'M', kErrorTag = 'E';
 
 // offset: a byte in a binary file, or -1.
 std::string error_answer(int64_t line, int64_t offset, const std::string& what) {
@@ -98,23 +98,128 @@ std::string error_answer(int64_t line, int64_t offset, const std::string& what) 
   return w.bytes();
 }
 
-std::string answer(const ImportLimits& limits, const std::function<Mesh(std::vector<std::string>&)>& import) {
+void put_vec(Writer& w, const Vec3& v) {
+  w.put(v.x);
+  w.put(v.y);
+  w.put(v.z);
+}
+Vec3 get_vec(Reader& r) {
+  Vec3 v;
+  v.x = r.get<double>();
+  v.y = r.get<double>();
+  v.z = r.get<double>();
+  return v;
+}
+
+void put_model(Writer& w, const ImportedModel& model) {
+  const Mesh& mesh = model.mesh;
+  w.put(uint64_t(mesh.positions.size()));
+  for (const Vec3& p : mesh.positions) put_vec(w, p);
+  w.put(uint64_t(mesh.polygons.size()));
+  for (const std::vector<int>& poly : mesh.polygons) {
+    w.put(uint64_t(poly.size()));
+    for (int i : poly) w.put(i);
+  }
+  w.put(uint64_t(mesh.material.size()));
+  for (int m : mesh.material) w.put(m);
+  w.put(uint64_t(mesh.corner_colour.size()));
+  for (const CornerColour& c : mesh.corner_colour) {
+    w.put(c.r);
+    w.put(c.g);
+    w.put(c.b);
+  }
+  w.put(uint64_t(model.materials.size()));
+  for (const std::optional<Surface>& s : model.materials) {
+    w.put(char(s.has_value()));
+    if (!s) continue;
+    for (double v : {s->r, s->g, s->b, s->n, s->t_min, s->t_max}) w.put(v);
+    for (double c : s->cre) w.put(c);
+  }
+  w.put(uint64_t(model.cameras.size()));
+  for (const ModelCamera& c : model.cameras) {
+    w.put_text(c.name);
+    for (const Vec3& v : {c.eye, c.forward, c.up}) put_vec(w, v);
+    w.put(c.fov_deg);
+    w.put(c.near);
+    w.put(char(c.orthographic));
+  }
+  w.put(uint64_t(model.lights.size()));
+  for (const ModelLight& l : model.lights) {
+    w.put_text(l.name);
+    w.put(int(l.kind));
+    put_vec(w, l.position);
+    put_vec(w, l.direction);
+    w.put(l.strength);
+    w.put(char(l.coloured));
+  }
+}
+
+ImportedModel get_model(Reader& r) {
+  ImportedModel model;
+  Mesh& mesh = model.mesh;
+  mesh.positions.resize(r.get_count(3 * sizeof(double)));
+  for (Vec3& p : mesh.positions) p = get_vec(r);
+  mesh.polygons.resize(r.get_count(sizeof(uint64_t)));
+  for (std::vector<int>& poly : mesh.polygons) {
+    poly.resize(r.get_count(sizeof(int)));
+    for (int& i : poly) i = r.get<int>();
+  }
+  mesh.material.resize(r.get_count(sizeof(int)));
+  for (int& m : mesh.material) m = r.get<int>();
+  mesh.corner_colour.resize(r.get_count(3 * sizeof(float)));
+  for (CornerColour& c : mesh.corner_colour) {
+    c.r = r.get<float>();
+    c.g = r.get<float>();
+    c.b = r.get<float>();
+  }
+  model.materials.resize(r.get_count(sizeof(char)));
+  for (std::optional<Surface>& s : model.materials) {
+    if (!r.get<char>()) continue;
+    s.emplace();
+    for (double* v : {&s->r, &s->g, &s->b, &s->n, &s->t_min, &s->t_max}) *v = r.get<double>();
+    for (double& c : s->cre) c = r.get<double>();
+  }
+  model.cameras.resize(r.get_count(sizeof(uint64_t)));
+  for (ModelCamera& c : model.cameras) {
+    c.name = r.get_text();
+    for (Vec3* v : {&c.eye, &c.forward, &c.up}) *v = get_vec(r);
+    c.fov_deg = r.get<double>();
+    c.near = r.get<double>();
+    c.orthographic = r.get<char>();
+  }
+  model.lights.resize(r.get_count(sizeof(uint64_t)));
+  for (ModelLight& l : model.lights) {
+    l.name = r.get_text();
+    const int kind = r.get<int>();
+    if (kind < 0 || kind > int(ModelLightKind::kOther)) throw std::runtime_error("the importer's answer is garbled");
+    l.kind = ModelLightKind(kind);
+    l.position = get_vec(r);
+    l.direction = get_vec(r);
+    l.strength = r.get<double>();
+    l.coloured = r.get<char>();
+  }
+  // What the scene reader indexes with must index within the answer.
+  const bool materials_fit = mesh.material.empty() || mesh.material.size() == mesh.polygons.size();
+  size_t corners = 0;
+  for (const std::vector<int>& poly : mesh.polygons) {
+    corners += poly.size();
+    for (int i : poly)
+      if (i < 0 || size_t(i) >= mesh.positions.size()) throw std::runtime_error("the importer's answer is garbled");
+  }
+  for (int m : mesh.material)
+    if (m < 0 || size_t(m) >= model.materials.size()) throw std::runtime_error("the importer's answer is garbled");
+  if (!materials_fit || (!mesh.corner_colour.empty() && mesh.corner_colour.size() != corners))
+    throw std::runtime_error("the importer's answer is garbled");
+  return model;
+}
+
+std::string answer(const ImportLimits& limits, const std::function<ImportedModel(std::vector<std::string>&)>& import) {
   Writer w;
   try {
     std::vector<std::string> warnings;
-    const Mesh mesh = import(warnings);
-    w.put(kMeshTag);
-    w.put(uint64_t(mesh.positions.size()));
-    for (const Vec3& p : mesh.positions) {
-      w.put(p.x);
-      w.put(p.y);
-      w.put(p.z);
-    }
-    w.put(uint64_t(mesh.polygons.size()));
-    for (const std::vector<int>& poly : mesh.polygons) {
-      w.put(uint64_t(poly.size()));
-      for (int i : poly) w.put(i);
-    }
+    const ImportedModel model = import(warnings);
+    w.put(kModelTag);
+    put_model(w, model);
     w.put(uint64_t(warnings.size()));
     for (const std::string& s : warnings) w.put_text(s);
     return w.bytes();
@@ -148,7 +253,7 @@ uint64_t address_space_bytes() {
 }
 
 [[noreturn]] void run_child(int fd, pid_t parent, const ImportLimits& limits,
-                            const std::function<Mesh(std::vector<std::string>&)>& import) {
+                            const std::function<ImportedModel(std::vector<std::string>&)>& import) {
   // Never outlive the parent, nor the limit (a file that names a FIFO blocks
   // in the importer: the parent's deadline cannot reach a child it left).
   prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -192,9 +297,9 @@ std::string out_of_memory_message(const ImportLimits& limits) {
          std::to_string(limits.memory_bytes >> 20) + " MiB more than the process held)";
 }
 
-Mesh import_in_child(const std::string& path, const ImportLimits& limits,
-                     const std::function<Mesh(std::vector<std::string>& warnings)>& import,
-                     std::vector<std::string>& warnings) {
+ImportedModel import_in_child(const std::string& path, const ImportLimits& limits,
+                              const std::function<ImportedModel(std::vector<std::string>& warnings)>& import,
+                              std::vector<std::string>& warnings) {
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) refuse(path, std::string("could not start: no pipe (") + strerror(errno) + ")");
   std::fflush(stdout);
@@ -252,7 +357,7 @@ Mesh import_in_child(const std::string& path, const ImportLimits& limits,
   // Exit 0 once the whole answer is written: anything else is cut short.
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || bytes.empty())
     refuse(path, "ended without a whole answer (exit " + std::to_string(WEXITSTATUS(status)) + ")");
-  Mesh mesh;
+  ImportedModel model;
   std::vector<std::string> said;
   try {
     Reader r(bytes);
@@ -262,17 +367,7 @@ Mesh import_in_child(const std::string& path, const ImportLimits& limits,
       if (offset >= 0) throw InputError::at_byte(path, uint64_t(offset), what);
       throw InputError(path, int(line), what);
     }
-    mesh.positions.resize(r.get_count(3 * sizeof(double)));
-    for (Vec3& p : mesh.positions) {
-      p.x = r.get<double>();
-      p.y = r.get<double>();
-      p.z = r.get<double>();
-    }
-    mesh.polygons.resize(r.get_count(sizeof(uint64_t)));
-    for (std::vector<int>& poly : mesh.polygons) {
-      poly.resize(r.get_count(sizeof(int)));
-      for (int& i : poly) i = r.get<int>();
-    }
+    model = get_model(r);
     const uint64_t count = r.get_count(sizeof(uint64_t));
     for (uint64_t i = 0; i < count; ++i) said.push_back(r.get_text());
   } catch (const InputError&) {
@@ -281,7 +376,7 @@ Mesh import_in_child(const std::string& path, const ImportLimits& limits,
     refuse(path, "ended without a whole answer");
   }
   warnings.insert(warnings.end(), said.begin(), said.end());
-  return mesh;
+  return model;
 }
 
 }  // namespace girtd

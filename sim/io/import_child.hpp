@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "frontend/mesh.hpp"
 #include "io/model_import.hpp"
 
 namespace girtd {
@@ -19,11 +18,11 @@ namespace girtd {
 // child, or caught by assimp itself and passed on as its error text).
 std::string out_of_memory_message(const ImportLimits& limits);
 
-// Runs `import` in a child under `limits`; returns its mesh and appends its
+// Runs `import` in a child under `limits`; returns its model and appends its
 // warnings, or throws its InputError (or "FILE: cannot read the model: the
 // importer ..." when it crashed, ran out of memory or time).
-Mesh import_in_child(const std::string& path, const ImportLimits& limits,
-                     const std::function<Mesh(std::vector<std::string>& warnings)>& import,
-                     std::vector<std::string>& warnings);
+ImportedModel import_in_child(const std::string& path, const ImportLimits& limits,
+                              const std::function<ImportedModel(std::vector<std::string>& warnings)>& import,
+                              std::vector<std::string>& warnings);
 
 }  // namespace girtd

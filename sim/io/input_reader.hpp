@@ -11,6 +11,8 @@
 
 namespace girtd {
 
-Trace read_input(const std::string& path, std::optional<TraceLevel> level, const Params& params);
+// `camera`: a model file's camera by name (render --camera); "" the default.
+Trace read_input(const std::string& path, std::optional<TraceLevel> level, const Params& params,
+                 const std::string& camera = "");
 
 }  // namespace girtd

@@ -15,6 +15,7 @@
 #include <map>
 #include <optional>
 #include <regex>
+#include <set>
 #include <tuple>
 
 #include "common/input_error.hpp"
@@ -22,7 +23,9 @@
 #include "io/assimp_messages.hpp"
 #include "io/import_child.hpp"
 #include "io/model_precheck.hpp"
+#include "io/model_materials.hpp"
 #include "io/model_tokens.hpp"
+#include "io/scene_defaults.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -35,6 +38,8 @@ std::string lower_extension(const std::string& path) {
   return e;
 }
 
+
+float unit(float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f; }
 
 // assimp's message, with "line N" turned into the error's line when present.
 [[noreturn]] void fail_assimp(const std::string& path, const Assimp::Importer& importer) {
@@ -102,12 +107,26 @@ class MessageLog : public Assimp::LogStream {
   std::vector<std::pair<std::string, int>> warnings_;
 };
 
-// Opens the model file and nothing else: materials in model files are not
-// used, and what a material library can do to assimp 5.2.5 is worse than
-// missing it: a bad number or a 1-7 byte .mtl fails a model that can be
-// drawn, a name it can open but not read throws "File read error" (and
-// leaks), a pipe never ends. The
-// OBJ pre-check warns of missing libraries and names itself.
+// Opens regular files only: a model naming a FIFO or a device (as a glTF's
+// buffer or an OBJ's material library) would block or read forever.
+class RegularFilesOnly : public Assimp::DefaultIOSystem {
+ public:
+  bool Exists(const char* file) const override { return regular(file) && DefaultIOSystem::Exists(file); }
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    return regular(file) ? DefaultIOSystem::Open(file, mode) : nullptr;
+  }
+
+ private:
+  static bool regular(const char* file) {
+    std::error_code ec;
+    return fs::is_regular_file(file, ec);
+  }
+};
+
+// Opens the model file and nothing else: the second try of a pre-checked
+// format whose material library failed it. What an .mtl can do to assimp
+// 5.2.5: a bad number or a 1-7 byte file fails a model that can be drawn, a
+// name it can open but not read throws "File read error" (and leaks).
 class OnlyTheModelFile : public Assimp::DefaultIOSystem {
  public:
   explicit OnlyTheModelFile(const std::string& path) : model_(canonical(path)) {}
@@ -126,41 +145,64 @@ class OnlyTheModelFile : public Assimp::DefaultIOSystem {
   std::string model_;
 };
 
+// The polygons of every node's meshes, placed by the node's transform, with
+// their materials and corner colours; and the transform of every node, by
+// name, for the cameras and lights that hang on nodes.
 class MeshBuilder {
  public:
-  explicit MeshBuilder(const std::string& path) : path_(path) {}
+  MeshBuilder(const std::string& path, const aiScene& scene, const std::set<std::string>& made_up_materials)
+      : path_(path), scene_(scene), look_(scene, path, made_up_materials) {}
 
-  void add(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent) {
+  void add(const aiNode& node, const aiMatrix4x4& parent) {
     const aiMatrix4x4 m = parent * node.mTransformation;
+    node_transform_.emplace(node.mName.C_Str(), m);  // the first node of a name
     for (unsigned i = 0; i < node.mNumMeshes; ++i) {
-      if (node.mMeshes[i] >= scene.mNumMeshes) fail(path_, 0, "node refers to a mesh that does not exist");
-      add_mesh(*scene.mMeshes[node.mMeshes[i]], m);
+      if (node.mMeshes[i] >= scene_.mNumMeshes) fail(path_, 0, "node refers to a mesh that does not exist");
+      add_mesh(*scene_.mMeshes[node.mMeshes[i]], m);
     }
-    for (unsigned i = 0; i < node.mNumChildren; ++i) add(scene, *node.mChildren[i], m);
+    for (unsigned i = 0; i < node.mNumChildren; ++i) add(*node.mChildren[i], m);
   }
 
   // `file_polygons`: what the pre-check counted (its formats only).
-  Mesh take(std::optional<uint64_t> file_polygons) {
+  ImportedModel take(std::optional<uint64_t> file_polygons, std::vector<std::string>& warnings) {
     // Some damage reaches no log (sim/io/README.md): the count is the check.
     if (file_polygons && faces_read_ != *file_polygons)
       fail(path_, 0,
            "assimp 5.2.5 returned " + std::to_string(faces_read_) + " polygons where the pre-check counted " +
                std::to_string(*file_polygons) + ": refused rather than drawn wrong");
-    if (mesh_.polygons.empty()) fail(path_, 0, "the model has no polygons (points and lines are not drawn)");
-    return std::move(mesh_);
+    if (model_.mesh.polygons.empty()) fail(path_, 0, "the model has no polygons (points and lines are not drawn)");
+    model_.materials = look_.surfaces();
+    if (!any_corner_colour_) model_.mesh.corner_colour.clear();
+    add_cameras();
+    add_lights();
+    for (const std::string& w : look_.warnings()) warnings.push_back(path_ + ": " + w);
+    return std::move(model_);
   }
 
  private:
   void add_mesh(const aiMesh& am, const aiMatrix4x4& m) {
+    Mesh& mesh = model_.mesh;
     std::vector<int> index_of(am.mNumVertices);
     for (unsigned v = 0; v < am.mNumVertices; ++v) {
       const aiVector3D p = m * am.mVertices[v];
       const Vec3 w{p.x, p.y, p.z};
       if (!finite(w)) fail(path_, 0, "vertex " + std::to_string(v) + " has a coordinate that is NaN or infinite");
-      auto [it, fresh] = index_.emplace(std::make_tuple(w.x, w.y, w.z), static_cast<int>(mesh_.positions.size()));
-      if (fresh) mesh_.positions.push_back(w);
+      auto [it, fresh] = index_.emplace(std::make_tuple(w.x, w.y, w.z), static_cast<int>(mesh.positions.size()));
+      if (fresh) mesh.positions.push_back(w);
       index_of[v] = it->second;
     }
+    const unsigned material = am.mMaterialIndex < scene_.mNumMaterials ? am.mMaterialIndex : 0;
+    const Surface surface = material < look_.surfaces().size() && look_.surfaces()[material]
+                                ? *look_.surfaces()[material]
+                                : SceneDefaults::material();
+    const bool vertex_colours = am.HasVertexColors(0);
+    const bool textured = am.HasTextureCoords(0) && look_.has_texture(material);
+    struct Corner {
+      int index;
+      CornerColour colour;
+    };
+    std::vector<Corner> corners;
+    std::vector<aiVector3D> uv;
     for (unsigned f = 0; f < am.mNumFaces; ++f) {
       const aiFace& face = am.mFaces[f];
       if (face.mNumIndices < 3) continue;  // points and lines
@@ -168,29 +210,133 @@ class MeshBuilder {
       if (face.mNumIndices > kMaxPolygonVertices)
         fail(path_, 0, "face " + std::to_string(f) + " has " + std::to_string(face.mNumIndices) + " vertices (limit " +
                            std::to_string(kMaxPolygonVertices) + ")");
-      if (mesh_.polygons.size() >= kMaxModelPolygons)
+      if (mesh.polygons.size() >= kMaxModelPolygons)
         fail(path_, 0, "more than " + std::to_string(kMaxModelPolygons) + " polygons");
-      std::vector<int> poly;
+      corners.clear();
+      uv.clear();
       for (unsigned k = 0; k < face.mNumIndices; ++k) {
-        if (face.mIndices[k] >= am.mNumVertices)
-          fail(path_, 0, "face " + std::to_string(f) + " refers to vertex " + std::to_string(face.mIndices[k]) +
-                             " of " + std::to_string(am.mNumVertices));
-        poly.push_back(index_of[face.mIndices[k]]);
+        const unsigned v = face.mIndices[k];
+        if (v >= am.mNumVertices)
+          fail(path_, 0, "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + " of " +
+                             std::to_string(am.mNumVertices));
+        // Vertex colours replace the material's colour (sim/io/README.md "Materials").
+        CornerColour c{float(surface.r), float(surface.g), float(surface.b)};
+        if (vertex_colours) {
+          const aiColor4D vc = am.mColors[0][v];
+          c = {255.0f * unit(vc.r), 255.0f * unit(vc.g), 255.0f * unit(vc.b)};
+        }
+        corners.push_back({index_of[v], c});
+        if (textured) uv.push_back(am.mTextureCoords[0][v]);
       }
-      drop_repeated_corners(poly, [](int a, int b) { return a == b; });
-      if (poly.size() >= 3) mesh_.polygons.push_back(std::move(poly));
+      if (textured)
+        if (const std::optional<CornerColour> t = look_.texture_mean(material, uv))
+          for (Corner& c : corners) c.colour = {c.colour.r * t->r, c.colour.g * t->g, c.colour.b * t->b};
+      drop_repeated_corners(corners, [](const Corner& a, const Corner& b) { return a.index == b.index; });
+      if (corners.size() < 3) continue;
+      std::vector<int> poly;
+      poly.reserve(corners.size());
+      for (const Corner& c : corners) {
+        poly.push_back(c.index);
+        mesh.corner_colour.push_back(c.colour);
+      }
+      mesh.polygons.push_back(std::move(poly));
+      mesh.material.push_back(material_key(material));
+      any_corner_colour_ = any_corner_colour_ || vertex_colours || textured;
+    }
+  }
+
+  // Polygons of different materials never share a surface; those the
+  // importer made up are all the default material, hence one key.
+  int material_key(unsigned material) const {
+    const auto& s = look_.surfaces();
+    if (material < s.size() && s[material]) return int(material);
+    for (size_t i = 0; i < s.size(); ++i)
+      if (!s[i]) return int(i);
+    return int(material);
+  }
+
+  // The transform of the node named `name` (a camera's or a light's), or none.
+  aiMatrix4x4 placement(const aiString& name) const {
+    auto it = node_transform_.find(name.C_Str());
+    return it == node_transform_.end() ? aiMatrix4x4() : it->second;
+  }
+  static Vec3 vec(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+  static Vec3 direction(const aiMatrix4x4& m, const aiVector3D& d) {
+    const Vec3 w = vec(aiMatrix3x3(m) * d);
+    return length(w) > 0 && finite(w) ? normalized(w) : Vec3{};
+  }
+
+  // glTF puts cameras and lights at their node's origin; assimp 5.2.5 also
+  // copies the node's translation into aiCamera::mPosition, which the node's
+  // transform would then apply twice.
+  bool gltf() const {
+    const std::string ext = lower_extension(path_);
+    return ext == ".gltf" || ext == ".glb";
+  }
+
+  void add_cameras() {
+    const std::string ext = lower_extension(path_);
+    for (unsigned i = 0; i < scene_.mNumCameras; ++i) {
+      const aiCamera& c = *scene_.mCameras[i];
+      const aiMatrix4x4 m = placement(c.mName);
+      ModelCamera cam;
+      cam.name = c.mName.C_Str();
+      cam.eye = vec(m * (gltf() ? aiVector3D() : c.mPosition));
+      cam.forward = direction(m, c.mLookAt);
+      cam.up = direction(m, c.mUp);
+      // assimp 5.2.5's mHorizontalFOV is the whole angle for most formats,
+      // half of it for FBX, and glTF's vertical angle times the aspect ratio
+      // (sim/io/README.md "Cameras"). GIRTD's screen is square.
+      double fov = c.mHorizontalFOV;
+      if (ext == ".fbx") fov *= 2;
+      if (gltf() && c.mAspect > 0) fov /= c.mAspect;
+      cam.fov_deg = fov * 180.0 / M_PI;
+      cam.near = std::isfinite(c.mClipPlaneNear) && c.mClipPlaneNear > 0 ? c.mClipPlaneNear : 0;
+      cam.orthographic = c.mOrthographicWidth > 0;
+      if (!finite(cam.eye) || !std::isfinite(cam.fov_deg)) continue;
+      model_.cameras.push_back(cam);
+    }
+  }
+
+  void add_lights() {
+    for (unsigned i = 0; i < scene_.mNumLights; ++i) {
+      const aiLight& l = *scene_.mLights[i];
+      const aiMatrix4x4 m = placement(l.mName);
+      ModelLight light;
+      light.name = l.mName.C_Str();
+      switch (l.mType) {
+        case aiLightSource_DIRECTIONAL: light.kind = ModelLightKind::kDirectional; break;
+        case aiLightSource_POINT: light.kind = ModelLightKind::kPoint; break;
+        case aiLightSource_SPOT: light.kind = ModelLightKind::kSpot; break;
+        case aiLightSource_AREA: light.kind = ModelLightKind::kArea; break;
+        case aiLightSource_AMBIENT: light.kind = ModelLightKind::kAmbient; break;
+        default: light.kind = ModelLightKind::kOther; break;
+      }
+      light.position = vec(m * (gltf() ? aiVector3D() : l.mPosition));
+      light.direction = direction(m, l.mDirection);
+      const aiColor3D c = l.mColorDiffuse;
+      const double hi = std::max({double(c.r), double(c.g), double(c.b)});
+      light.strength = std::isfinite(hi) && hi > 0 ? hi : 0;
+      const double lo = std::min({double(c.r), double(c.g), double(c.b)});
+      light.coloured = light.strength > 0 && lo < 0.99 * hi;
+      if (!finite(light.position)) continue;
+      model_.lights.push_back(light);
     }
   }
 
   std::string path_;
-  Mesh mesh_;
+  const aiScene& scene_;
+  ModelLook look_;
+  ImportedModel model_;
   uint64_t faces_read_ = 0;
+  bool any_corner_colour_ = false;
   std::map<std::tuple<double, double, double>, int> index_;
+  std::map<std::string, aiMatrix4x4> node_transform_;
 };
 
 // The file itself, then the pre-check where its format has one: the polygons
 // it counted, for checking what assimp returns against.
-std::optional<uint64_t> check_file(const std::string& path, std::vector<std::string>& warnings) {
+std::optional<PrecheckResult> check_file(const std::string& path, std::vector<std::string>& warnings) {
   std::error_code ec;
   if (!fs::exists(path, ec)) fail(path, 0, "no such file");
   if (!fs::is_regular_file(path, ec)) fail(path, 0, "not a regular file");
@@ -203,24 +349,48 @@ std::optional<uint64_t> check_file(const std::string& path, std::vector<std::str
   return precheck_model(path, ext, size, warnings);
 }
 
+// What assimp read, built and checked; its log's warnings after the model's.
+ImportedModel build(const std::string& path, const aiScene& scene, const std::optional<PrecheckResult>& checked,
+                    const MessageLog& log, std::vector<std::string>& warnings) {
+  MeshBuilder b(path, scene, checked ? checked->undefined_materials : std::set<std::string>{});
+  b.add(*scene.mRootNode, aiMatrix4x4());
+  std::vector<std::string> look;
+  ImportedModel model = b.take(checked ? std::optional<uint64_t>(checked->polygons) : std::nullopt, look);
+  for (const std::string& w : log.warnings()) warnings.push_back(path + ": " + w);
+  warnings.insert(warnings.end(), look.begin(), look.end());
+  return model;
+}
+
 // assimp, and the checks on what it returns.
-Mesh assimp_import(const std::string& path, std::optional<uint64_t> file_polygons, std::vector<std::string>& warnings) {
+ImportedModel assimp_import(const std::string& path, const std::optional<PrecheckResult>& checked,
+                            std::vector<std::string>& warnings) {
   // No aiProcess_Triangulate: polygons must reach the GIRTD triangulator.
   const unsigned flags = aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
+  std::string with_its_files;  // why the import with the files the model names failed
+  {
+    MessageLog log;
+    Assimp::Importer importer;
+    importer.SetIOHandler(new RegularFilesOnly());  // the importer owns it
+    const aiScene* scene = importer.ReadFile(path, flags);
+    if (scene && scene->mRootNode && log.first_error().empty()) return build(path, *scene, checked, log, warnings);
+    if (!checked) {
+      if (!scene || !scene->mRootNode) fail_assimp(path, importer);
+      fail(path, 0, "cannot read the model: " + log.first_error());
+    }
+    with_its_files = !scene || !scene->mRootNode ? importer.GetErrorString() : log.first_error();
+  }
+  // A pre-checked format (OBJ) may have failed on its material library:
+  // once more with the model file alone, whose errors are the model's.
   MessageLog log;
   Assimp::Importer importer;
-  // The pre-checked formats open their own file only (an OBJ's material
-  // library is trouble, above); the others open what they name (a glTF's
-  // buffers), inside the child's limits.
-  if (file_polygons) importer.SetIOHandler(new OnlyTheModelFile(path));  // the importer owns it
+  importer.SetIOHandler(new OnlyTheModelFile(path));
   const aiScene* scene = importer.ReadFile(path, flags);
   if (!scene || !scene->mRootNode) fail_assimp(path, importer);
   if (!log.first_error().empty()) fail(path, 0, "cannot read the model: " + log.first_error());
-  MeshBuilder b(path);
-  b.add(*scene, *scene->mRootNode, aiMatrix4x4());
-  Mesh mesh = b.take(file_polygons);
-  for (const std::string& w : log.warnings()) warnings.push_back(path + ": " + w);
-  return mesh;
+  while (!with_its_files.empty() && std::isspace(static_cast<unsigned char>(with_its_files.back()))) with_its_files.pop_back();
+  warnings.push_back(path + ": the files it names (its material library) could not be read (" + with_its_files +
+                     "): drawn with the default material");
+  return build(path, *scene, checked, log, warnings);
 }
 
 }  // namespace
@@ -234,24 +404,24 @@ bool is_model_file(const std::string& path) {
   return is_checked_model_format(e) || Assimp::Importer().IsExtensionSupported(e);
 }
 
-Mesh import_model_in_process(const std::string& path, std::vector<std::string>& warnings) {
+ImportedModel import_model_in_process(const std::string& path, std::vector<std::string>& warnings) {
   std::vector<std::string> found;  // the pre-check's first, then assimp's
-  const std::optional<uint64_t> file_polygons = check_file(path, found);
-  Mesh mesh = assimp_import(path, file_polygons, found);
+  const std::optional<PrecheckResult> checked = check_file(path, found);
+  ImportedModel model = assimp_import(path, checked, found);
   warnings.insert(warnings.end(), found.begin(), found.end());
-  return mesh;
+  return model;
 }
 
-Mesh import_model(const std::string& path, std::vector<std::string>& warnings) {
+ImportedModel import_model(const std::string& path, std::vector<std::string>& warnings) {
   std::vector<std::string> found;
-  const std::optional<uint64_t> file_polygons = check_file(path, found);
-  Mesh mesh = import_in_child(
+  const std::optional<PrecheckResult> checked = check_file(path, found);
+  ImportedModel model = import_in_child(
       path, kImportLimits, [&](std::vector<std::string>& child_warnings) {
-        return assimp_import(path, file_polygons, child_warnings);
+        return assimp_import(path, checked, child_warnings);
       },
       found);
   warnings.insert(warnings.end(), found.begin(), found.end());
-  return mesh;
+  return model;
 }
 
 }  // namespace girtd

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "frontend/mesh.hpp"
+#include "io/imported_model.hpp"
 
 namespace girtd {
 
@@ -34,15 +34,16 @@ inline constexpr ImportLimits kImportLimits{60.0, uint64_t(8) << 30};
 
 // Positions are merged when bit-identical, so polygons that share a corner
 // share an index (STL repeats every corner). Points and lines are skipped.
-// What assimp could go on from without changing the geometry (a missing
-// .mtl, an unknown material: materials in model files are not used) is
-// appended to `warnings` as "FILE: what"; anything that would change the
+// The file's materials, vertex colours, textures' stand-in, cameras and
+// lights come along (imported_model.hpp). What assimp could go on from
+// without changing the geometry (a missing .mtl, a texture it cannot read)
+// is appended to `warnings` as "FILE: what"; anything that would change the
 // positions or polygons is an InputError (sim/io/README.md lists which).
-Mesh import_model(const std::string& path, std::vector<std::string>& warnings);
+ImportedModel import_model(const std::string& path, std::vector<std::string>& warnings);
 
 // The same import in this process: what the child runs (the fuzz targets
 // call it, so the fuzzer sees the importer's coverage).
-Mesh import_model_in_process(const std::string& path, std::vector<std::string>& warnings);
+ImportedModel import_model_in_process(const std::string& path, std::vector<std::string>& warnings);
 
 // By extension (any case): a format assimp reads, but .raw (a headerless
 // trace may be named so; a scene's "file" still imports a RAW model).

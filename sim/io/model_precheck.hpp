@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -17,16 +18,22 @@ namespace girtd {
 // ".obj", ".off", ".ply", ".stl" (lower case): the formats with a check here.
 bool is_checked_model_format(const std::string& lower_ext);
 
-// Reads the file once (`size` bytes) and dispatches on the extension. Returns
-// the polygons (faces of 3 or more corners) the file holds, for checking
-// what assimp returns against; appends what it can go on from (an OBJ's
-// missing material library) to `warnings`.
-uint64_t precheck_model(const std::string& path, const std::string& lower_ext, uint64_t size,
-                        std::vector<std::string>& warnings);
+struct PrecheckResult {
+  uint64_t polygons = 0;  // faces of 3 or more corners, for checking what assimp returns against
+  // OBJ: the names `usemtl` gives that no material library defines. assimp
+  // makes a grey material up for each; they are drawn with the default.
+  std::set<std::string> undefined_materials;
+};
+
+// Reads the file once (`size` bytes) and dispatches on the extension;
+// appends what it can go on from (an OBJ's missing material library) to
+// `warnings`.
+PrecheckResult precheck_model(const std::string& path, const std::string& lower_ext, uint64_t size,
+                              std::vector<std::string>& warnings);
 
 // The OBJ check (obj_precheck.cpp): every v and f statement; the material
-// libraries' warnings. Returns the polygons.
-uint64_t precheck_obj(const std::string& path, const std::string& text, std::vector<std::string>& warnings);
+// libraries' warnings.
+PrecheckResult precheck_obj(const std::string& path, const std::string& text, std::vector<std::string>& warnings);
 
 // The PLY check (ply_precheck.cpp): header, then every element instance, so
 // no list length reaches assimp unchecked. Returns the polygons.

@@ -122,9 +122,9 @@ std::string rest_of(std::string_view statement, std::string_view keyword) {
   return std::string(statement.substr(a, b - a));
 }
 
-// Material libraries and names: materials in model files are not used (the
-// model is drawn with the scene's or the default material), so what is
-// missing is a warning, never an error. assimp is not let read them at all.
+// Material libraries and names: a missing library or material leaves its
+// faces with the default material, so it is a warning, never an error. The
+// libraries read here are the ones assimp reads next (regular files only).
 class ObjMaterials {
  public:
   ObjMaterials(const std::string& path, std::vector<std::string>& warnings) : path_(path), warnings_(warnings) {}
@@ -144,9 +144,17 @@ class ObjMaterials {
     if (!any) warn(line, "material library '" + names + "' not found");
   }
   void use(int line, const std::string& name) {
+    used_.insert(name);
     if (defined_.count(name) || !reported_.insert(name).second) return;
     if (libraries_ > 0) warn(line, "usemtl '" + name + "' names no material of the file's material libraries");
     else if (!warned_) warn(line, "usemtl '" + name + "' without a material library");
+  }
+  // The names used that no library defines (once all are read).
+  std::set<std::string> undefined() const {
+    std::set<std::string> out;
+    for (const std::string& n : used_)
+      if (!defined_.count(n)) out.insert(n);
+    return out;
   }
 
  private:
@@ -170,14 +178,14 @@ class ObjMaterials {
   void warn(int line, const std::string& what) {
     warned_ = true;
     warnings_.push_back(path_ + ":" + std::to_string(line) + ": " + what +
-                        " (materials in model files are not used: drawn with the scene's or the default material)");
+                        " (its faces are drawn with the default material)");
   }
 
   const std::string& path_;
   std::vector<std::string>& warnings_;
   int libraries_ = 0;
   bool warned_ = false;  // one warning for a file without libraries, not one per usemtl
-  std::set<std::string> defined_, reported_;
+  std::set<std::string> defined_, reported_, used_;
 };
 
 // A statement as assimp 5.2.5's ObjFileParser::parseFile sees it: by its
@@ -242,7 +250,7 @@ void check_vertex(const std::string& path, int line, int64_t vertex, const std::
 
 }  // namespace
 
-uint64_t precheck_obj(const std::string& path, const std::string& text, std::vector<std::string>& warnings) {
+PrecheckResult precheck_obj(const std::string& path, const std::string& text, std::vector<std::string>& warnings) {
   if (text.rfind("\xEF\xBB\xBF", 0) == 0)
     fail(path, 1, "the file starts with a UTF-8 byte-order mark (assimp 5.2.5 would lose its first statement)");
   if (const int line = odd_line_end(text)) fail(path, line, kOddLineEnd);
@@ -305,7 +313,7 @@ uint64_t precheck_obj(const std::string& path, const std::string& text, std::vec
                  (i > 0 ? "the file has " + vertices_text(total) : vertices_text(seen) + " so far") + ")");
     }
   }
-  return polygons;
+  return {polygons, materials.undefined()};
 }
 
 }  // namespace girtd

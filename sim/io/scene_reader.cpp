@@ -21,19 +21,12 @@
 #include "frontend/view_transform.hpp"
 #include "io/json_lines.hpp"
 #include "io/model_import.hpp"
+#include "io/model_lights.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using Ptr = json::json_pointer;  // built with operator/, which escapes ~ and / in names
-
-Surface SceneDefaults::material() {
-  Surface s;
-  s.r = s.g = s.b = 200;
-  s.cre = {0.30, 0.30, 0.31, 0.33, 0.38, 0.50, 0.80};
-  s.n = 20;
-  return s;
-}
 
 namespace {
 
@@ -48,52 +41,86 @@ struct Transform {
     p = rotate_z(rotate_y(rotate_x(p, rotate_deg.x * kDegToRad), rotate_deg.y * kDegToRad), rotate_deg.z * kDegToRad);
     return p + translate;
   }
+  // A direction: where the transform takes it, at unit length.
+  Vec3 turn(Vec3 d) const { return normalized(apply(d) - apply({0, 0, 0})); }
   bool mirrors() const { return scale.x * scale.y * scale.z < 0; }
 };
 
 struct Instance {
   std::string name;
-  std::shared_ptr<const Mesh> mesh;
+  std::shared_ptr<const ImportedModel> model;  // a file's, or a mesh given in the scene
   SurfaceGroups groups;
-  Surface material;
+  std::vector<Surface> group_surface;  // each group's material
+  bool corner_colours = false;         // the model's own (not when the scene names a material)
   Transform transform;
+  const Mesh& mesh() const { return model->mesh; }
 };
+
+// Each surface group's material: the scene's `chosen` one, else the file's,
+// else the default. The scene's material replaces the file's corner colours too.
+void choose_surfaces(Instance& in, const std::optional<Surface>& chosen) {
+  const Mesh& mesh = in.mesh();
+  in.group_surface.assign(size_t(in.groups.count), chosen ? *chosen : SceneDefaults::material());
+  in.corner_colours = !chosen && !mesh.corner_colour.empty();
+  if (chosen || mesh.material.empty()) return;
+  for (size_t i = 0; i < mesh.polygons.size(); ++i)  // a group holds one material (surface_groups.hpp)
+    if (const std::optional<Surface>& m = in.model->materials.at(size_t(mesh.material[i])))
+      in.group_surface[size_t(in.groups.group[i])] = *m;
+}
 
 // The camera as the scene gives it; "auto" frames the first frame's polygons.
 struct CameraSpec {
   bool automatic = true;
   Camera camera;
+  std::optional<double> near;  // a model file's camera: its near clip plane
 };
 
 // Polygons, surfaces of every instance placed with its transform.
 void place(const std::vector<Instance>& instances, WorldFrame& w) {
   for (const Instance& in : instances) {
+    const Mesh& mesh = in.mesh();
     const int base = static_cast<int>(w.surfaces.size());
-    for (int g = 0; g < in.groups.count; ++g) w.surfaces.push_back(in.material);
+    w.surfaces.insert(w.surfaces.end(), in.group_surface.begin(), in.group_surface.end());
     std::vector<Vec3> moved;
-    moved.reserve(in.mesh->positions.size());
-    for (const Vec3& p : in.mesh->positions) moved.push_back(in.transform.apply(p));
-    w.objects.push_back({w.polygons.size(), in.mesh->polygons.size()});
-    for (size_t i = 0; i < in.mesh->polygons.size(); ++i) {
+    moved.reserve(mesh.positions.size());
+    for (const Vec3& p : mesh.positions) moved.push_back(in.transform.apply(p));
+    w.objects.push_back({w.polygons.size(), mesh.polygons.size()});
+    size_t corner = 0;  // the polygon's first in mesh.corner_colour
+    for (size_t i = 0; i < mesh.polygons.size(); ++i) {
       WorldPolygon poly;
       poly.surface = base + in.groups.group[i];
-      for (int k : in.mesh->polygons[i]) poly.p.push_back(moved[static_cast<size_t>(k)]);
-      if (in.transform.mirrors()) std::reverse(poly.p.begin(), poly.p.end());  // keep the front counter-clockwise
+      for (int k : mesh.polygons[i]) poly.p.push_back(moved[static_cast<size_t>(k)]);
+      if (in.corner_colours)
+        poly.colour.assign(mesh.corner_colour.begin() + std::ptrdiff_t(corner),
+                           mesh.corner_colour.begin() + std::ptrdiff_t(corner + poly.p.size()));
+      corner += poly.p.size();
+      if (in.transform.mirrors()) {  // keep the front counter-clockwise
+        std::reverse(poly.p.begin(), poly.p.end());
+        std::reverse(poly.colour.begin(), poly.colour.end());
+      }
       w.polygons.push_back(std::move(poly));
     }
   }
 }
 
+// The centre of the box around `points` (each a Vec3 handed to `visit`'s callback).
+template <class Visit>
+Vec3 box_centre(Visit visit) {
+  Vec3 lo{1e300, 1e300, 1e300}, hi = lo * -1.0;
+  visit([&](const Vec3& p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  });
+  return (lo + hi) * 0.5;
+}
+
 // Looks at the bounding box's centre from SceneDefaults::auto_view_direction,
 // far enough that the bounding sphere fits the field of view.
 void auto_frame(WorldFrame& w, double fov_deg, std::optional<double> focal) {
-  Vec3 lo{1e300, 1e300, 1e300}, hi = lo * -1.0;
-  for (const WorldPolygon& poly : w.polygons)
-    for (const Vec3& p : poly.p) {
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-  const Vec3 centre = (lo + hi) * 0.5;
+  const Vec3 centre = box_centre([&](auto&& see) {
+    for (const WorldPolygon& poly : w.polygons)
+      for (const Vec3& p : poly.p) see(p);
+  });
   double radius = 0;
   for (const WorldPolygon& poly : w.polygons)
     for (const Vec3& p : poly.p) radius = std::max(radius, length(p - centre));
@@ -111,9 +138,66 @@ LightSet default_lights() {
   return l;
 }
 
+// The placed models' own lights, mapped together (model_lights.hpp), or nullopt.
+std::optional<LightSet> file_lights(const std::vector<Instance>& instances, std::vector<std::string>& warnings) {
+  std::vector<ModelLight> all;
+  for (const Instance& in : instances)
+    for (ModelLight l : in.model->lights) {
+      l.position = in.transform.apply(l.position);
+      l.direction = in.transform.turn(l.direction);
+      all.push_back(l);
+    }
+  if (all.empty()) return std::nullopt;
+  const Vec3 centre = box_centre([&](auto&& see) {
+    for (const Instance& in : instances)
+      for (const Vec3& p : in.mesh().positions) see(in.transform.apply(p));
+  });
+  return map_model_lights(all, centre, instances.size() == 1 ? instances[0].name : "the scene's models", warnings);
+}
+
+// A model file's camera as the scene places it.
+struct PlacedCamera {
+  Camera camera;
+  std::optional<double> near;
+};
+
+// The camera named `name` among the placed models' files, or ("" ) the
+// first perspective one; nullopt when there is none. A name that is not
+// there is an error of `option`.
+std::optional<PlacedCamera> file_camera(const std::vector<Instance>& instances, const std::string& name,
+                                        const std::string& option, std::vector<std::string>& warnings) {
+  std::vector<std::string> seen;
+  for (const Instance& in : instances)
+    for (const ModelCamera& c : in.model->cameras) {
+      seen.push_back(c.name);
+      if (!name.empty() && c.name != name) continue;
+      if (c.orthographic) {
+        if (!name.empty()) throw InputError(option, 0, "camera \"" + name + "\" is orthographic: GIRTD projects in perspective only");
+        warnings.push_back(in.name + ": orthographic camera \"" + c.name + "\" passed over (GIRTD projects in perspective only)");
+        continue;
+      }
+      ModelCamera placed = c;
+      placed.eye = in.transform.apply(c.eye);
+      placed.forward = in.transform.turn(c.forward);
+      placed.up = in.transform.turn(c.up);
+      const std::optional<Camera> cam = map_model_camera(placed);
+      if (!cam) {
+        if (!name.empty()) throw InputError(option, 0, "camera \"" + name + "\" has no view direction");
+        continue;
+      }
+      return PlacedCamera{*cam, c.near > 0 ? std::optional<double>(c.near) : std::nullopt};
+    }
+  if (name.empty()) return std::nullopt;
+  std::string list;
+  for (const std::string& n : seen) list += (list.empty() ? "" : ", ") + ("\"" + n + "\"");
+  throw InputError(option, 0, "no camera named \"" + name + "\" in the model" +
+                                  (seen.empty() ? " (it has no cameras)" : " (its cameras: " + list + ")"));
+}
+
 class SceneReader {
  public:
-  SceneReader(const std::string& path, const Params& params) : path_(path), params_(params) {
+  SceneReader(const std::string& path, const Params& params, const std::string& camera_name)
+      : path_(path), params_(params), camera_name_(camera_name) {
     std::optional<std::string> text = read_file_text(path);
     if (!text) throw InputError(path, 0, "cannot open file");
     text_ = std::move(*text);
@@ -122,8 +206,8 @@ class SceneReader {
     lines_ = std::make_unique<JsonLines>(text_);
   }
   // A document with no text: errors name `name` and the key, line 0.
-  SceneReader(const json& document, const std::string& name, const Params& params)
-      : path_(name), params_(params), root_(document) {}
+  SceneReader(const json& document, const std::string& name, const Params& params, const std::string& camera_name)
+      : path_(name), params_(params), camera_name_(camera_name), root_(document) {}
 
   Trace read() {
     const Ptr root;
@@ -161,15 +245,20 @@ class SceneReader {
     base.cull_back_faces = root_.contains("cull_back_faces") ? boolean(root / "cull_back_faces") : false;
     std::optional<double> focal;
     if (root_.contains("focal_distance")) focal = number(root / "focal_distance", 1e-9, 1e12);
-    base.lights = root_.contains("lights") ? lights(root / "lights") : default_lights();
     const std::map<std::string, Surface> materials = read_materials();
     std::vector<Instance> instances = read_models(materials);
-    const CameraSpec base_camera = root_.contains("camera") ? camera(root / "camera") : CameraSpec{};
+    // The scene's lights and camera, else the model files' own, else the defaults.
+    std::optional<LightSet> from_files;
+    if (!root_.contains("lights")) from_files = file_lights(instances, warnings_);
+    base.lights = root_.contains("lights") ? lights(root / "lights") : from_files ? *from_files : default_lights();
+    CameraSpec base_camera = root_.contains("camera") ? camera(root / "camera") : CameraSpec{};
+    if (!camera_name_.empty() || !root_.contains("camera"))
+      if (std::optional<PlacedCamera> c = file_camera(instances, camera_name_, "--camera", warnings_))
+        base_camera = CameraSpec{false, c->camera, c->near};
 
     Trace trace;
     trace.path = path_;
     trace.level = TraceLevel::kPolygon;
-    trace.warnings = warnings_;
     const bool has_frames = root_.contains("frames");
     const size_t n_frames = has_frames ? frames_count() : 1;
     check_corners(instances, n_frames, has_frames ? root / "frames" : root / "models");
@@ -180,7 +269,7 @@ class SceneReader {
       std::vector<Instance> moved = instances;
       if (has_frames) {
         keys(at(fp), fp, {"camera", "models", "comment"});
-        if (at(fp).contains("camera")) cam = camera(fp / "camera");
+        if (at(fp).contains("camera") && camera_name_.empty()) cam = camera(fp / "camera");  // --camera wins
         if (at(fp).contains("models")) frame_models(fp / "models", moved);
       }
       TraceFrame tf;
@@ -201,10 +290,11 @@ class SceneReader {
         tf.world.focal_distance = auto_focal_;
       } else {
         tf.world.camera = cam.camera;
-        tf.world.focal_distance = focal ? *focal : SceneDefaults::kFocalDistance;
+        tf.world.focal_distance = focal ? *focal : cam.near ? *cam.near : SceneDefaults::kFocalDistance;
       }
       trace.frames.push_back(std::move(tf));
     }
+    trace.warnings = warnings_;
     return trace;
   }
 
@@ -342,14 +432,15 @@ class SceneReader {
 
   // A model file, imported once per scene; its errors are the scene's, at
   // the "file" key's line, with the model's own FILE:LINE after "model".
-  std::shared_ptr<const Mesh> mesh(const Ptr& file_ptr, std::map<std::string, std::shared_ptr<const Mesh>>& cache) {
+  std::shared_ptr<const ImportedModel> model_file(const Ptr& file_ptr,
+                                                  std::map<std::string, std::shared_ptr<const ImportedModel>>& cache) {
     fs::path file = string(file_ptr);
     if (file.is_relative()) file = fs::path(path_).parent_path() / file;
     const std::string key = file.lexically_normal().string();
     if (!fs::exists(key)) fail(file_ptr, "model file " + key + " does not exist");
     if (!cache.count(key)) {
       try {
-        cache[key] = std::make_shared<const Mesh>(import_model(key, warnings_));
+        cache[key] = std::make_shared<const ImportedModel>(import_model(key, warnings_));
       } catch (const InputError& e) {
         fail(file_ptr, "model " + e.formatted());
       }
@@ -362,12 +453,13 @@ class SceneReader {
   // a model file is (model_import.cpp): corners at the same position are one
   // vertex, so a mesh with a vertex per face corner is shaded smooth alike,
   // and a corner repeated in a polygon is dropped.
-  std::shared_ptr<const Mesh> inline_mesh(const Ptr& ptr) const {
+  std::shared_ptr<const ImportedModel> inline_mesh(const Ptr& ptr) const {
     keys(at(ptr), ptr, {"vertices", "polygons"});
     for (const char* k : {"vertices", "polygons"})
       if (!at(ptr).contains(k) || !at(ptr / k).is_array() || at(ptr / k).empty())
         fail(ptr, std::string("a mesh needs a non-empty list \"") + k + "\"");
-    auto m = std::make_shared<Mesh>();
+    auto model = std::make_shared<ImportedModel>();
+    Mesh* m = &model->mesh;
     const size_t n = at(ptr / "vertices").size();
     if (n > size_t(std::numeric_limits<int>::max())) fail(ptr / "vertices", "too many vertices");
     std::vector<int> index_of(n);
@@ -392,7 +484,7 @@ class SceneReader {
       if (poly.size() >= 3) m->polygons.push_back(std::move(poly));
     }
     if (m->polygons.empty()) fail(ptr / "polygons", "the mesh has no polygon with three distinct corners");
-    return m;
+    return model;
   }
 
   std::vector<Instance> read_models(const std::map<std::string, Surface>& materials) {
@@ -401,7 +493,7 @@ class SceneReader {
     const json& m = at(ms);
     if (!m.is_array() || m.empty()) fail(ms, "\"models\" must be a non-empty list");
     std::vector<Instance> out;
-    std::map<std::string, std::shared_ptr<const Mesh>> cache;
+    std::map<std::string, std::shared_ptr<const ImportedModel>> cache;
     for (size_t i = 0; i < m.size(); ++i) {
       const Ptr mp = ms / i;
       keys(at(mp), mp, {"name", "file", "mesh", "material", "crease_deg", "scale", "rotate_deg", "translate"});
@@ -410,16 +502,17 @@ class SceneReader {
       for (const Instance& o : out)
         if (o.name == in.name) fail(mp / "name", "two models are named \"" + in.name + "\"");
       if (at(mp).contains("file") == at(mp).contains("mesh")) fail(mp, "a model needs \"file\" or \"mesh\" (one of them)");
-      in.mesh = at(mp).contains("file") ? mesh(mp / "file", cache) : inline_mesh(mp / "mesh");
-      in.material = SceneDefaults::material();
+      in.model = at(mp).contains("file") ? model_file(mp / "file", cache) : inline_mesh(mp / "mesh");
+      std::optional<Surface> chosen;  // the scene's material, over the file's
       if (at(mp).contains("material")) {
         const std::string name = string(mp / "material");
         auto it = materials.find(name);
         if (it == materials.end()) fail(mp / "material", "no material named \"" + name + "\" in \"materials\"");
-        in.material = it->second;
+        chosen = it->second;
       }
       const double crease = at(mp).contains("crease_deg") ? number(mp / "crease_deg", 0, 180) : kDefaultCreaseDeg;
-      in.groups = surface_groups(*in.mesh, crease);
+      in.groups = surface_groups(in.mesh(), crease);
+      choose_surfaces(in, chosen);
       transform_keys(mp, in.transform);
       out.push_back(std::move(in));
     }
@@ -465,7 +558,7 @@ class SceneReader {
   void check_corners(const std::vector<Instance>& instances, size_t frames, const Ptr& where) const {
     uint64_t per_frame = 0;
     for (const Instance& in : instances)
-      for (const std::vector<int>& p : in.mesh->polygons) per_frame += p.size();
+      for (const std::vector<int>& p : in.mesh().polygons) per_frame += p.size();
     if (per_frame > kMaxSceneCorners / frames)
       fail(where, std::to_string(frames) + (frames == 1 ? " frame" : " frames") + " x " + std::to_string(per_frame) +
                       " polygon corners is more than the " + std::to_string(kMaxSceneCorners) +
@@ -486,6 +579,7 @@ class SceneReader {
 
   std::string path_, text_;
   const Params& params_;
+  std::string camera_name_;  // --camera: a model file's camera, over the scene's
   std::vector<std::string> warnings_;  // the models' (each imported once)
   json root_;
   std::unique_ptr<JsonLines> lines_;
@@ -494,33 +588,40 @@ class SceneReader {
 
 }  // namespace
 
-Trace read_scene(const std::string& path, const Params& params) {
-  Trace t = SceneReader(path, params).read();
+Trace read_scene(const std::string& path, const Params& params, const std::string& camera) {
+  Trace t = SceneReader(path, params, camera).read();
   apply_q_override(t, params);
   return t;
 }
 
-Trace read_scene_document(const nlohmann::json& document, const std::string& name, const Params& params) {
-  Trace t = SceneReader(document, name, params).read();
+Trace read_scene_document(const nlohmann::json& document, const std::string& name, const Params& params,
+                          const std::string& camera) {
+  Trace t = SceneReader(document, name, params, camera).read();
   apply_q_override(t, params);
   return t;
 }
 
-Trace scene_from_model(const std::string& path, const Params& params) {
+Trace scene_from_model(const std::string& path, const Params& params, const std::string& camera) {
   std::vector<std::string> warnings;
-  const Mesh mesh = import_model(path, warnings);
   Instance in;
-  in.mesh = std::make_shared<const Mesh>(mesh);
-  in.groups = surface_groups(mesh, kDefaultCreaseDeg);
-  in.material = SceneDefaults::material();
+  in.name = path;
+  in.model = std::make_shared<const ImportedModel>(import_model(path, warnings));
+  in.groups = surface_groups(in.mesh(), kDefaultCreaseDeg);
+  choose_surfaces(in, std::nullopt);
+  TraceFrame tf;
+  const std::optional<LightSet> lights = file_lights({in}, warnings);
+  tf.world.lights = lights ? *lights : default_lights();
+  place({in}, tf.world);
+  if (const std::optional<PlacedCamera> c = file_camera({in}, camera, "--camera", warnings)) {
+    tf.world.camera = c->camera;
+    tf.world.focal_distance = c->near ? *c->near : SceneDefaults::kFocalDistance;
+  } else {
+    auto_frame(tf.world, SceneDefaults::kFovDeg, std::nullopt);
+  }
   Trace trace;
   trace.path = path;
   trace.level = TraceLevel::kPolygon;
   trace.warnings = std::move(warnings);
-  TraceFrame tf;
-  tf.world.lights = default_lights();
-  place({in}, tf.world);
-  auto_frame(tf.world, SceneDefaults::kFovDeg, std::nullopt);
   trace.frames.push_back(std::move(tf));
   apply_q_override(trace, params);
   return trace;

@@ -2,6 +2,7 @@
 // one pipeline level.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,9 @@ namespace girtd {
 
 // kThesis: the thesis appendix program's own units (models/thesis/README.md).
 enum class TraceLevel { kTriangle, kDda, kPolygon, kThesis };
+
+// A polygon trace's `lights` record holds at most this many directional lights.
+inline constexpr int64_t kMaxTraceLights = 64;
 
 const char* level_name(TraceLevel level);
 // Throws InputError(origin, line, ...) for an unknown name.

@@ -152,7 +152,7 @@ class TraceBuilder {
     if (k == "format") return format(p);
     if (k == "dda") return dda(p);
     if (k == "surface" || k == "lights" || k == "camera" || k == "focal" || k == "cull") return world_setting(p);
-    if (k == "poly") return polygon(p);
+    if (k == "poly" || k == "vpoly") return polygon(p);
     if (k == "object") return object(p);
     if (level_ == TraceLevel::kThesis) return thesis_record(p);
     p.fail("unknown record '" + k + "'");
@@ -336,19 +336,31 @@ class TraceBuilder {
     current().triangles.push_back(read_triangle(p, 0, kThesisVertex));
   }
 
+  // `poly SURFACE N X Y Z ...`, or `vpoly SURFACE N X Y Z R G B ...` whose
+  // corners carry their own diffuse colour.
   void polygon(const LineParser& p) {
     require_level(p, TraceLevel::kPolygon);
-    if (!camera_seen_ || !focal_seen_) p.fail("'poly' before the 'camera' and 'focal' records");
+    const std::string& k = p.keyword();
+    const bool coloured = k == "vpoly";
+    if (!camera_seen_ || !focal_seen_) p.fail("'" + k + "' before the 'camera' and 'focal' records");
     WorldFrame& w = current().world;
-    if (p.size() < 3) p.fail("'poly' takes SURFACE N and then X Y Z for each of N vertices");
+    const size_t per_corner = coloured ? 6 : 3;
+    if (p.size() < 3)
+      p.fail("'" + k + "' takes SURFACE N and then " + (coloured ? "X Y Z R G B" : "X Y Z") + " for each of N vertices");
     WorldPolygon poly;
     poly.source_line = p.line();
     poly.surface = static_cast<int>(p.integer_in(1, "SURFACE", 0, static_cast<int64_t>(w.surfaces.size()) - 1));
     const int64_t n = p.integer_in(2, "N", 3, kMaxTracePolygonVertices);
-    p.expect_count(2 + 3 * static_cast<size_t>(n), "numbers (SURFACE N, then X Y Z per vertex)");
-    for (size_t i = 0; i < static_cast<size_t>(n); ++i)
-      poly.p.push_back({p.real_in(3 + 3 * i, "X", -1e12, 1e12), p.real_in(4 + 3 * i, "Y", -1e12, 1e12),
-                        p.real_in(5 + 3 * i, "Z", -1e12, 1e12)});
+    p.expect_count(2 + per_corner * static_cast<size_t>(n),
+                   coloured ? "numbers (SURFACE N, then X Y Z R G B per vertex)" : "numbers (SURFACE N, then X Y Z per vertex)");
+    for (size_t i = 0; i < static_cast<size_t>(n); ++i) {
+      const size_t at = 3 + per_corner * i;
+      poly.p.push_back({p.real_in(at, "X", -1e12, 1e12), p.real_in(at + 1, "Y", -1e12, 1e12),
+                        p.real_in(at + 2, "Z", -1e12, 1e12)});
+      if (coloured)
+        poly.colour.push_back({float(p.real_in(at + 3, "R", 0, 255)), float(p.real_in(at + 4, "G", 0, 255)),
+                               float(p.real_in(at + 5, "B", 0, 255))});
+    }
     w.polygons.push_back(std::move(poly));
     if (w.objects.empty()) w.objects.push_back({0, 0});  // polygons before any `object` record
     ++w.objects.back().count;
@@ -362,7 +374,6 @@ class TraceBuilder {
     if (w.objects.empty() || w.objects.back().count > 0) w.objects.push_back({w.polygons.size(), 0});
   }
 
-  static constexpr int64_t kMaxTraceLights = 64;
   static constexpr int64_t kMaxTracePolygonVertices = 65536;
 
   bool camera_seen_ = false, focal_seen_ = false;

@@ -99,8 +99,11 @@ void TraceWriter::write(const WorldFrame& w) {
     bool starts = false;  // an object starts here (skip empty ones)
     while (next_object < objects.size() && objects[next_object].first == i) starts = objects[next_object++].count > 0;
     if (starts && objects.size() > 1) out_ << "object\n";
-    out_ << "poly " << poly.surface << " " << poly.p.size();
-    for (const Vec3& v : poly.p) out_ << "  " << v.x << " " << v.y << " " << v.z;
+    out_ << (poly.colour.empty() ? "poly " : "vpoly ") << poly.surface << " " << poly.p.size();
+    for (size_t k = 0; k < poly.p.size(); ++k) {
+      out_ << "  " << poly.p[k].x << " " << poly.p[k].y << " " << poly.p[k].z;
+      if (!poly.colour.empty()) out_ << " " << poly.colour[k].r << " " << poly.colour[k].g << " " << poly.colour[k].b;
+    }
     out_ << "\n";
   }
 }

@@ -1,13 +1,14 @@
 # Shared set-up of the CLI test scripts: sourced with GIRTD_BINARY REPO_ROOT
 # as $1 $2. Gives GIRTD and ROOT (absolute), RUN (the driver tools/girtd on
 # that binary: it makes the RTL variants and synthesis sizes a command needs
-# first and draws the plots after, as a user's run does), a scratch $TMP
+# first and draws the plots after, as a user's run does), PYTHON, a scratch $TMP
 # removed on exit, ok / bad counters and `finish` printing "N passed, N failed".
 set -uo pipefail
 GIRTD=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 ROOT=$(cd "$2" && pwd)
 export GIRTD_BINARY="$GIRTD"
 RUN="$ROOT/tools/girtd"
+PYTHON=/usr/bin/python3  # Debian's, where matplotlib and numpy are (not a pyenv shim)
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 cd "$ROOT"

@@ -3,7 +3,9 @@
 # every file renders on golden, approx and rtl with exit 0 and the same frame
 # on all three; that frame is its twin's (the same shape written without the
 # feature) or the stored, blessed image_sha256; a file with a twin has the
-# twin's triangles_in (a face dropped where nobody sees it still counts);
+# twin's Z buffer and triangles_in (a face dropped where nobody sees it
+# still counts); a `shape:` twin has only those (the file's materials or
+# vertex colours are drawn, the twin has none);
 # the front end's polygon count (report.json frontend.polygons, golden) is
 # the manifest's `polygons`, which make_corpus.py took from the face lists it
 # wrote (so a reader that drops or splits faces is caught even where its
@@ -45,14 +47,14 @@ for path in "$CORPUS"/*.obj "$CORPUS"/*.off "$CORPUS"/*.ply "$CORPUS"/*.stl; do
   [[ -n "${listed[$name]:-}" ]] && ok || bad "$name: not in corpus.tsv"
 done
 
-declare -A golden_sha golden_tris
+declare -A golden_sha golden_tris golden_z
 for i in "${!files[@]}"; do
   f=${files[$i]}
   [[ -f "$CORPUS/$f" ]] || continue
   first_sha="" first_backend=""
   for b in "${BACKENDS[@]}"; do
     out="$TMP/$f.$b"
-    "$GIRTD" render "$CORPUS/$f" --backend "$b" --out "$out" --quiet 2> "$out.err"; rc=$?
+    "$GIRTD" render "$CORPUS/$f" --backend "$b" --out "$out" --z-png --quiet 2> "$out.err"; rc=$?
     if [[ $rc -ne 0 || ! -f "$out/report.json" ]]; then
       bad "$f on $b: exit $rc: $(head -c 300 "$out.err")"
       continue
@@ -72,6 +74,7 @@ for i in "${!files[@]}"; do
     if [[ $b == golden ]]; then
       golden_sha[$f]=$sha
       golden_tris[$f]=$(report_value "$out/report.json" triangles_in)
+      golden_z[$f]=$(sha256sum < "$out/z.png")
       pixels=$(report_value "$out/report.json" pixels_written)
       [[ "${pixels:-0}" -gt 1000 ]] && ok || bad "$f: pixels_written ${pixels:-none}: nothing drawn"
       polygons=$(jq -r '.frontend.polygons' "$out/report.json")
@@ -86,9 +89,17 @@ for i in "${!files[@]}"; do
   f=${files[$i]} twin=${twins[$i]} stored=${shas[$i]}
   [[ -n "${golden_sha[$f]:-}" ]] || continue
   if [[ $twin != - ]]; then
+    shape_only=0
+    [[ $twin == shape:* ]] && shape_only=1 twin=${twin#shape:}
     if [[ -z "${golden_sha[$twin]:-}" ]]; then bad "$f: twin $twin has no golden frame (not in corpus.tsv, or it failed)"; continue; fi
-    [[ "${golden_sha[$f]}" == "${golden_sha[$twin]}" ]] && ok ||
-      bad "$f: frame ${golden_sha[$f]} differs from its twin $twin's ${golden_sha[$twin]}"
+    if [[ $shape_only == 0 ]]; then
+      [[ "${golden_sha[$f]}" == "${golden_sha[$twin]}" ]] && ok ||
+        bad "$f: frame ${golden_sha[$f]} differs from its twin $twin's ${golden_sha[$twin]}"
+    else
+      [[ "${golden_sha[$f]}" != "${golden_sha[$twin]}" ]] && ok ||
+        bad "$f: frame is its shape twin $twin's: the file's colours were not drawn"
+    fi
+    [[ "${golden_z[$f]}" == "${golden_z[$twin]}" ]] && ok || bad "$f: Z buffer differs from its twin $twin's"
     [[ "${golden_tris[$f]}" == "${golden_tris[$twin]}" ]] && ok ||
       bad "$f: triangles_in ${golden_tris[$f]}, its twin $twin's ${golden_tris[$twin]}"
   fi

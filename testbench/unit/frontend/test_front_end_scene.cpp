@@ -85,7 +85,7 @@ WorldFrame scene() {
       std::vector<Vec3> q = {sp(i, j), sp(i, j + 1), sp(i + 1, j + 1), sp(i + 1, j)};
       if (i == 0) q.erase(q.begin());               // north cap: triangles
       else if (i == nlat - 1) q.erase(q.begin() + 3);  // south cap
-      f.polygons.push_back({0, q, 0});
+      f.polygons.push_back({0, q, 0, {}});
     }
   // Cube: six flat, matte surfaces (1..6) of the same material.
   Surface cube;
@@ -101,7 +101,7 @@ WorldFrame scene() {
       for (auto [a, b] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
         q.push_back(vec(add(kCubeC, cube_axis(add(n, add(mul(u, a), mul(w, b)))))));
       f.surfaces.push_back(cube);
-      f.polygons.push_back({static_cast<int>(f.surfaces.size()) - 1, q, 0});
+      f.polygons.push_back({static_cast<int>(f.surfaces.size()) - 1, q, 0, {}});
     }
   return f;
 }
@@ -182,11 +182,11 @@ TEST_CASE("front end: depth clip through the near plane, non-planar polygon", "[
   f.focal_distance = 0.5;
   f.surfaces.resize(1);
   // A floor from behind the camera (z = +5) to z = -20: cut at Zs = 0.5.
-  f.polygons.push_back({0, {{-5, 0, 5}, {5, 0, 5}, {5, 0, -20}, {-5, 0, -20}}, 1});
+  f.polygons.push_back({0, {{-5, 0, 5}, {5, 0, 5}, {5, 0, -20}, {-5, 0, -20}}, 1, {}});
   // Entirely behind: dropped.
-  f.polygons.push_back({0, {{-1, 1, 3}, {1, 1, 3}, {0, 2, 3}}, 2});
+  f.polygons.push_back({0, {{-1, 1, 3}, {1, 1, 3}, {0, 2, 3}}, 2, {}});
   // A twisted quad in front.
-  f.polygons.push_back({0, {{-1, 1, -6}, {1, 1.5, -6}, {1, 3, -6}, {-1, 2.5, -5.5}}, 3});
+  f.polygons.push_back({0, {{-1, 1, -6}, {1, 1.5, -6}, {1, 3, -6}, {-1, 2.5, -5.5}}, 3, {}});
   FrontEnd fe(ScreenMap{1024, 1024}, 65534);
   const auto tris = fe.run_frame(f, Window{});
   const FrontendCounts c = fe.counts();
@@ -228,7 +228,7 @@ TEST_CASE("front end: a polygon without area is degenerate in world space, befor
   std::vector<Vec3> seen;
   for (const Vec3& p : line) seen.push_back(to_camera_space(f.camera, p));
   REQUIRE(length(newell_normal(seen)) > 0);
-  f.polygons.push_back({0, line, 1});
+  f.polygons.push_back({0, line, 1, {}});
   for (bool cull : {false, true}) {
     f.cull_back_faces = cull;
     FrontEnd fe(ScreenMap{1024, 1024}, 65534);
@@ -239,7 +239,7 @@ TEST_CASE("front end: a polygon without area is degenerate in world space, befor
   }
   // A thin but real sliver (area / perimeter^2 = 1.25e-6) stays a polygon.
   f.cull_back_faces = false;
-  f.polygons = {{0, {{0, 0, -5}, {1, 0, -5}, {0.5, 1e-5, -5}}, 2}};
+  f.polygons = {{0, {{0, 0, -5}, {1, 0, -5}, {0.5, 1e-5, -5}}, 2, {}}};
   FrontEnd fe(ScreenMap{1024, 1024}, 65534);
   fe.run_frame(f, Window{});
   CHECK(fe.counts().degenerate_polygons == 0);

@@ -23,7 +23,7 @@ namespace {
 // A model that must import without a warning.
 Mesh import_clean(const std::string& path) {
   std::vector<std::string> warnings;
-  Mesh mesh = import_model(path, warnings);
+  Mesh mesh = import_model(path, warnings).mesh;
   CHECK(warnings.empty());
   return mesh;
 }

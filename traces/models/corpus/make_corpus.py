@@ -290,7 +290,7 @@ def house_files(v, faces, groups):
         for _, g, fs in groups:
             s += "usemtl %s\ns off\n" % material[g] + "".join("f %s\n" % " ".join(str(i + 1) for i in fc) for fc in fs)
         return s
-    put("house.mtl", "# materials of house_mtl.obj (never used: GIRTD draws models with its default material)\n"
+    put("house.mtl", "# materials of house_mtl.obj\n"
         "newmtl plaster\nKa 0.2 0.2 0.2\nKd 0.9 0.85 0.7\nKs 0 0 0\nillum 1\n\n"
         "newmtl tiles\nKa 0.2 0.1 0.1\nKd 0.7 0.2 0.1\nKs 0.3 0.3 0.3\nNs 20\nillum 2\n\n"
         "newmtl brick\nKd 0.6 0.3 0.2\nillum 1\n\n"
@@ -485,19 +485,20 @@ BLESSED = {
     "ball.obj": "60917a1ead7f12ff7b66a75694ebfd2b630b4ea0bd2dd112f8422b4efff3157b",
 }
 
-# file, twin ('-' for none), expect (ok | warning), what it exercises,
+# file, twin ('-' for none; 'shape:NAME' when only the shape is NAME's, the colours not), expect (ok | warning), what it exercises,
 # stored image_sha256 ('-' unless no twin can give the same frame); main()
 # adds the polygon count the writer recorded (POLYGONS).
 MANIFEST = [
     ("house.obj", "-", "ok", "reference: house (walls, floor, hip roof, chimney), one object, positive indices", "-"),
     ("house_groups.obj", "house.obj", "ok", "o and g: two objects of two groups, each object's vertices before its faces", "-"),
     ("house_lines.obj", "house.obj", "ok", "l and p elements besides the faces (not drawn)", "-"),
-    ("house_mtl.obj", "house.obj", "ok", "mtllib house.mtl (present) and usemtl of its materials (ignored)", "-"),
+    ("house_mtl.obj", "shape:house.obj", "ok", "mtllib house.mtl (present) and usemtl of its materials (drawn in their colours)", "-"),
     ("house_mtl_noobj.obj", "house_mtl.obj", "ok",
      "usemtl before any o or g (assimp 5.2.5 logs 'No object detected to attach a new mesh instance' at Err: no warning)", "-"),
-    ("house_nomtl.obj", "house_mtl.obj", "warning",
-     "the same bytes as house_mtl.obj but its mtllib names a file that does not exist (house_lost.mtl)", "-"),
-    ("house_badmtl.obj", "house_mtl.obj", "warning", "usemtl of a material house.mtl lacks: warning", "-"),
+    ("house_nomtl.obj", "house.obj", "warning",
+     "the same bytes as house_mtl.obj but its mtllib names a file that does not exist (house_lost.mtl): "
+     "the default material", "-"),
+    ("house_badmtl.obj", "shape:house_mtl.obj", "warning", "usemtl of a material house.mtl lacks: warning, the default material there", "-"),
     ("house.off", "house.obj", "ok", "plain OFF (the house as house.obj, read by a reader that is not OBJ's)", "-"),
     ("gem.obj", "-", "ok", "reference: faceted gem (8-gon table, crown and girdle quads, pavilion triangles)", "-"),
     ("gem_negidx.obj", "gem.obj", "ok", "negative (relative) indices, vertices in blocks, faces reaching back across blocks", "-"),
@@ -505,8 +506,8 @@ MANIFEST = [
     ("gem_cont.obj", "gem.obj", "ok", "backslash line continuations in v and f lines (the 8-gon over three lines)", "-"),
     ("gem_crlf.obj", "gem.obj", "ok", "CR LF line ends (Windows), backslash continuations included", "-"),
     ("gem.off", "gem.obj", "ok", "plain OFF (the gem as gem.obj: same polygons, same order)", "-"),
-    ("gem_fcolor.off", "gem.off", "ok", "OFF with an RGB colour (0..255) after each face", "-"),
-    ("gem_coff.off", "gem.off", "ok", "COFF: RGBA (0..1) after each vertex", "-"),
+    ("gem_fcolor.off", "gem.off", "ok", "OFF with an RGB colour (0..255) after each face (assimp 5.2.5 does not read it)", "-"),
+    ("gem_coff.off", "shape:gem.off", "ok", "COFF: RGBA (0..1) after each vertex (drawn as corner colours)", "-"),
     ("prisms.obj", "prisms_tri.obj", "ok", "convex 5-, 6-, 7-, 8-gon caps and quad sides (polygons kept for the GIRTD triangulator)", "-"),
     ("prisms_tri.obj", "-", "ok", "reference: the prisms with each n-gon cap written as the triangulator's fan", "-"),
     ("prisms.ply", "prisms.obj", "ok", "binary little-endian PLY with the prisms' 5- to 8-gons (as prisms.obj: a reader that is not OBJ's)", "-"),
@@ -515,8 +516,8 @@ MANIFEST = [
     ("sphere_vn.obj", "sphere.obj", "ok", "v//vn corners", "-"),
     ("sphere_vt.obj", "sphere.obj", "ok", "v/vt corners", "-"),
     ("sphere.ply", "sphere.obj", "ok", "ASCII PLY (float x y z, uchar/int face list)", "-"),
-    ("sphere_le.ply", "sphere.ply", "ok", "binary little-endian PLY with vertex normals and colours", "-"),
-    ("sphere_be.ply", "sphere.ply", "ok", "binary big-endian PLY with vertex normals and colours, uint vertex_index list", "-"),
+    ("sphere_le.ply", "shape:sphere.ply", "ok", "binary little-endian PLY with vertex normals and colours (normals ignored, colours drawn)", "-"),
+    ("sphere_be.ply", "sphere_le.ply", "ok", "binary big-endian PLY with vertex normals and colours, uint vertex_index list", "-"),
     ("icosa.obj", "-", "ok", "reference: stretched icosahedron, 20 triangles", "-"),
     ("icosa_ascii.stl", "icosa.obj", "ok", "ASCII STL", "-"),
     ("icosa_bin.stl", "icosa_ascii.stl", "ok", "binary STL", "-"),
@@ -539,7 +540,8 @@ def main():
     rows = ["# file\ttwin\texpect\twhat it exercises\tstored_image_sha256\tpolygons\n"]
     for row in MANIFEST:
         assert os.path.exists(os.path.join(HERE, row[0])), row[0]
-        assert row[1] == "-" or os.path.exists(os.path.join(HERE, row[1])), row[1]
+        twin = row[1].removeprefix("shape:")
+        assert twin == "-" or os.path.exists(os.path.join(HERE, twin)), twin
         rows.append("\t".join(row + (str(POLYGONS[row[0]]),)) + "\n")
     assert sorted(POLYGONS) == sorted(row[0] for row in MANIFEST), set(POLYGONS) ^ {row[0] for row in MANIFEST}
     assert not os.path.exists(os.path.join(HERE, "house_nomtl.mtl"))
