@@ -1,9 +1,11 @@
 #include "io/trace_reader.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -49,6 +51,51 @@ size_t Trace::primitive_count() const {
 }
 
 namespace {
+
+// Lines read with bounds: a path may name an endless stream (/dev/zero, a
+// FIFO) or a file of one endless line.
+class BoundedLines {
+ public:
+  BoundedLines(std::istream& in, const std::string& path) : in_(*in.rdbuf()), path_(path) {}
+  // The next line, without its end; false at the end of the file.
+  bool next(std::string& line) {
+    line.clear();
+    bool any = false;
+    for (;;) {
+      if (pos_ == end_) {
+        pos_ = 0;
+        end_ = static_cast<size_t>(std::max<std::streamsize>(0, in_.sgetn(buffer_, sizeof buffer_)));
+        if (end_ == 0) break;
+      }
+      any = true;
+      const char* start = buffer_ + pos_;
+      const char* eol = static_cast<const char*>(std::memchr(start, '\n', end_ - pos_));
+      const size_t take = eol ? static_cast<size_t>(eol - start) : end_ - pos_;
+      line.append(start, take);
+      pos_ += take + (eol ? 1 : 0);
+      if (line.size() > kMaxTraceLineBytes)
+        throw InputError(path_, number_ + 1, "a line longer than " + std::to_string(kMaxTraceLineBytes >> 20) +
+                                                 " MiB (the limit of a trace line)");
+      if (eol) break;
+    }
+    if (!any) return false;
+    ++number_;
+    read_ += line.size() + 1;
+    if (read_ > kMaxTraceBytes)
+      throw InputError(path_, number_, "larger than " + std::to_string(kMaxTraceBytes >> 30) +
+                                           " GiB, the limit of a trace (or an endless stream)");
+    return true;
+  }
+  int number() const { return number_; }
+
+ private:
+  std::streambuf& in_;
+  const std::string& path_;
+  char buffer_[1 << 16];
+  size_t pos_ = 0, end_ = 0;
+  int number_ = 0;
+  uint64_t read_ = 0;
+};
 
 class LineParser {
  public:
@@ -389,10 +436,11 @@ Trace read_trace(std::istream& in, const std::string& path, std::optional<TraceL
                  const Params& params) {
   TraceBuilder builder(path, params);
   std::optional<TraceLevel> level;
+  BoundedLines lines(in, path);
   int line_no = 0;
   bool header_done = false;
-  for (std::string line; std::getline(in, line);) {
-    ++line_no;
+  for (std::string line; lines.next(line);) {
+    line_no = lines.number();
     std::vector<std::string> fields = split_fields(line);
     if (fields.empty()) continue;
     LineParser p(path, line_no, std::move(fields));
@@ -430,7 +478,8 @@ Trace read_trace(const std::string& path, std::optional<TraceLevel> forced_level
 
 std::optional<TraceLevel> header_level(const std::string& path) {
   std::ifstream in(path);
-  for (std::string line; std::getline(in, line);) {
+  BoundedLines lines(in, path);
+  for (std::string line; lines.next(line);) {
     const std::vector<std::string> f = split_fields(line);
     if (f.empty()) continue;
     if (f[0] != "girtd-trace" || f.size() != 3) return std::nullopt;
@@ -441,7 +490,8 @@ std::optional<TraceLevel> header_level(const std::string& path) {
 
 bool has_trace_header(const std::string& path) {
   std::ifstream in(path);
-  for (std::string line; std::getline(in, line);) {
+  BoundedLines lines(in, path);
+  for (std::string line; lines.next(line);) {
     const std::vector<std::string> f = split_fields(line);
     if (f.empty()) continue;
     return f[0] == "girtd-trace";

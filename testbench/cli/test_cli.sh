@@ -41,6 +41,15 @@ printf 'girtd-trace 1 triangle\ntri 0 0 0 0 0 0 1  9 0 0 0 0 0 nan  0 9 0 0 0 0 
 "$GIRTD" render "$TMP/does_not_exist.trace" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 ]] && grep -q "does_not_exist.trace: no such file" "$TMP/err" && ok || bad "missing file (exit $rc)"
 
+# Endless streams stop at the readers' bounds (traces/FORMAT.md): one line,
+# exit 2, nothing written; timeout only catches a hang.
+timeout 120 "$GIRTD" render /dev/zero --out "$TMP/zero" 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/zero" && $(wc -l < "$TMP/err") -eq 1 ]] && grep -q "^/dev/zero:1: a line longer than 64 MiB" "$TMP/err" \
+  && ok || bad "/dev/zero as a trace: exit $rc: $(head -c 300 "$TMP/err")"
+timeout 120 "$GIRTD" render traces/equilateral_200.trace --config /dev/zero --out "$TMP/zero" 2> "$TMP/err"; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/zero" && $(wc -l < "$TMP/err") -eq 1 ]] && grep -q "^/dev/zero: larger than 256 MiB" "$TMP/err" \
+  && ok || bad "/dev/zero as a configuration: exit $rc: $(head -c 300 "$TMP/err")"
+
 "$GIRTD" render traces/equilateral_200.trace --backend nosuch --out "$TMP/nosuch" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 && ! -e "$TMP/nosuch" && $(wc -l < "$TMP/err") -eq 1 ]] && grep -q "backend" "$TMP/err" && ok \
   || bad "unknown back end gave exit $rc: $(cat "$TMP/err")"
