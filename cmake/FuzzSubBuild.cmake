@@ -33,8 +33,22 @@ set(_seeds_sweep_spec ${CMAKE_SOURCE_DIR}/traces/sweeps)
 foreach(ext obj off ply stl)
   set(_seeds_${ext} ${CMAKE_SOURCE_DIR}/traces/models)
 endforeach()
-foreach(target trace scene config sweep_spec obj off ply stl)
+# glTF and Collada: the repo's scenes in model files, and assimp's own test
+# models where they are installed (assimp-testmodels, a test dependency).
+set(_seeds_gltf ${CMAKE_SOURCE_DIR}/traces/models/file_scenes)
+set(_seeds_dae)
+foreach(pair "gltf;glTF2" "dae;Collada")
+  list(GET pair 0 ext)
+  list(GET pair 1 folder)
+  if(EXISTS /usr/share/assimp/models/${folder})
+    list(APPEND _seeds_${ext} /usr/share/assimp/models/${folder})
+  endif()
+endforeach()
+foreach(target trace scene config sweep_spec obj off ply stl gltf dae)
   set(_dirs ${_seeds_${target}})
+  if(NOT _dirs)
+    continue()  # no seeds on this machine
+  endif()
   foreach(kind corpus regressions)
     if(EXISTS ${CMAKE_SOURCE_DIR}/testbench/fuzz/${kind}/${target})
       list(APPEND _dirs ${CMAKE_SOURCE_DIR}/testbench/fuzz/${kind}/${target})
@@ -43,4 +57,11 @@ foreach(target trace scene config sweep_spec obj off ply stl)
   add_test(NAME "fuzz: replay ${target}" COMMAND ${GIRTD_FUZZ_BUILD}/bin/fuzz_${target} -runs=0 ${_dirs})
   set_tests_properties("fuzz: replay ${target}" PROPERTIES LABELS fuzz FIXTURES_REQUIRED fuzz_targets
                        FAIL_REGULAR_EXPRESSION "ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:")
+  # No pre-check stands before assimp's glTF and Collada readers, so their
+  # replays pass over assimp's own leak on refused input as campaigns do
+  # (testbench/fuzz/README.md "Findings"); the other targets' replays never.
+  if(target STREQUAL "gltf" OR target STREQUAL "dae")
+    set_tests_properties("fuzz: replay ${target}" PROPERTIES ENVIRONMENT
+                         "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/testbench/fuzz/assimp_leaks.supp")
+  endif()
 endforeach()

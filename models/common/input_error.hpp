@@ -10,6 +10,25 @@
 
 namespace girtd {
 
+// `text` on one line: a control character (a newline in a name a file gave,
+// in an importer's message) written as \xNN, so that an error stays one line.
+inline std::string one_line(const std::string& text) {
+  static const char* const kHex = "0123456789abcdef";
+  std::string out;
+  out.reserve(text.size());
+  for (const char ch : text) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    if (c >= 0x20 && c != 0x7f) {
+      out += ch;
+    } else {
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+  }
+  return out;
+}
+
 class InputError : public std::runtime_error {
  public:
   InputError(std::string file, int line, const std::string& what)
@@ -25,12 +44,13 @@ class InputError : public std::runtime_error {
   const std::string& file() const { return file_; }
   int line() const { return line_; }
   std::optional<uint64_t> offset() const { return offset_; }
-  // "FILE:LINE: what" (LINE omitted when unknown, i.e. 0), "FILE:@OFFSET: what".
+  // "FILE:LINE: what" (LINE omitted when unknown, i.e. 0), "FILE:@OFFSET: what",
+  // always one line.
   std::string formatted() const {
     std::string s = file_.empty() ? std::string("<input>") : file_;
     if (offset_) s += ":@" + std::to_string(*offset_);
     else if (line_ > 0) s += ":" + std::to_string(line_);
-    return s + ": " + what();
+    return one_line(s + ": " + what());
   }
 
  private:

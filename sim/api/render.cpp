@@ -10,6 +10,7 @@
 #include "backends/front_end_runner.hpp"
 #include "backends/render_session.hpp"
 #include "io/output_set.hpp"
+#include "common/input_error.hpp"
 #include "common/triangle_setup.hpp"
 #include "config/config_layers.hpp"
 #include "engine/backend_registry.hpp"
@@ -148,7 +149,7 @@ RenderResult render(const RenderRequest& a) {
   const LoadedInput input = load_input(a, params, !entry.timed());
   const std::vector<std::string>& input_warnings = input.polygons ? input.polygons->warnings : input.trace.warnings;
   auto warn = [&](const std::string& w) {
-    if (a.print_warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    if (a.print_warnings) std::fprintf(stderr, "warning: %s\n", one_line(w).c_str());
   };
   for (const std::string& w : input_warnings) warn(w);
 

@@ -70,6 +70,7 @@ class Reader {
     if (n > (in_.size() - at_) / item_bytes) throw std::runtime_error("the importer's answer is cut short");
     return n;
   }
+  bool at_end() const { return at_ == in_.size(); }
   std::string get_text() {
     const uint64_t n = get<uint64_t>();
     need(n);
@@ -179,7 +180,8 @@ ImportedModel get_model(Reader& r) {
     for (double* v : {&s->r, &s->g, &s->b, &s->n, &s->t_min, &s->t_max}) *v = r.get<double>();
     for (double& c : s->cre) c = r.get<double>();
   }
-  model.cameras.resize(r.get_count(sizeof(uint64_t)));
+  // At least a name's length, 11 numbers and a flag each.
+  model.cameras.resize(r.get_count(sizeof(uint64_t) + 11 * sizeof(double) + 1));
   for (ModelCamera& c : model.cameras) {
     c.name = r.get_text();
     for (Vec3* v : {&c.eye, &c.forward, &c.up}) *v = get_vec(r);
@@ -187,7 +189,8 @@ ImportedModel get_model(Reader& r) {
     c.near = r.get<double>();
     c.orthographic = r.get<char>();
   }
-  model.lights.resize(r.get_count(sizeof(uint64_t)));
+  // At least a name's length, the kind, 7 numbers and a flag each.
+  model.lights.resize(r.get_count(sizeof(uint64_t) + sizeof(int) + 7 * sizeof(double) + 1));
   for (ModelLight& l : model.lights) {
     l.name = r.get_text();
     const int kind = r.get<int>();
@@ -202,6 +205,7 @@ ImportedModel get_model(Reader& r) {
   const bool materials_fit = mesh.material.empty() || mesh.material.size() == mesh.polygons.size();
   size_t corners = 0;
   for (const std::vector<int>& poly : mesh.polygons) {
+    if (poly.size() < 3) throw std::runtime_error("the importer's answer is garbled");
     corners += poly.size();
     for (int i : poly)
       if (i < 0 || size_t(i) >= mesh.positions.size()) throw std::runtime_error("the importer's answer is garbled");
@@ -361,15 +365,18 @@ ImportedModel import_in_child(const std::string& path, const ImportLimits& limit
   std::vector<std::string> said;
   try {
     Reader r(bytes);
-    if (r.get<char>() == kErrorTag) {
+    const char tag = r.get<char>();
+    if (tag == kErrorTag) {
       const int64_t line = r.get<int64_t>(), offset = r.get<int64_t>();
       const std::string what = r.get_text();
       if (offset >= 0) throw InputError::at_byte(path, uint64_t(offset), what);
       throw InputError(path, int(line), what);
     }
+    if (tag != kModelTag) throw std::runtime_error("the importer's answer is garbled");
     model = get_model(r);
     const uint64_t count = r.get_count(sizeof(uint64_t));
     for (uint64_t i = 0; i < count; ++i) said.push_back(r.get_text());
+    if (!r.at_end()) throw std::runtime_error("the importer's answer is garbled");
   } catch (const InputError&) {
     throw;
   } catch (const std::exception&) {

@@ -150,8 +150,8 @@ class OnlyTheModelFile : public Assimp::DefaultIOSystem {
 // name, for the cameras and lights that hang on nodes.
 class MeshBuilder {
  public:
-  MeshBuilder(const std::string& path, const aiScene& scene, const std::set<std::string>& made_up_materials)
-      : path_(path), scene_(scene), look_(scene, path, made_up_materials) {}
+  MeshBuilder(const std::string& path, const aiScene& scene, const MadeUpMaterials& made_up)
+      : path_(path), scene_(scene), look_(scene, path, made_up) {}
 
   void add(const aiNode& node, const aiMatrix4x4& parent) {
     const aiMatrix4x4 m = parent * node.mTransformation;
@@ -196,6 +196,7 @@ class MeshBuilder {
                                 ? *look_.surfaces()[material]
                                 : SceneDefaults::material();
     const bool vertex_colours = am.HasVertexColors(0);
+    const bool mirrors = m.Determinant() < 0;
     const bool textured = am.HasTextureCoords(0) && look_.has_texture(material);
     struct Corner {
       int index;
@@ -231,6 +232,8 @@ class MeshBuilder {
       if (textured)
         if (const std::optional<CornerColour> t = look_.texture_mean(material, uv))
           for (Corner& c : corners) c.colour = {c.colour.r * t->r, c.colour.g * t->g, c.colour.b * t->b};
+      // A mirroring transform turns the winding: counter-clockwise again.
+      if (mirrors) std::reverse(corners.begin(), corners.end());
       drop_repeated_corners(corners, [](const Corner& a, const Corner& b) { return a.index == b.index; });
       if (corners.size() < 3) continue;
       std::vector<int> poly;
@@ -275,7 +278,6 @@ class MeshBuilder {
   }
 
   void add_cameras() {
-    const std::string ext = lower_extension(path_);
     for (unsigned i = 0; i < scene_.mNumCameras; ++i) {
       const aiCamera& c = *scene_.mCameras[i];
       const aiMatrix4x4 m = placement(c.mName);
@@ -284,11 +286,11 @@ class MeshBuilder {
       cam.eye = vec(m * (gltf() ? aiVector3D() : c.mPosition));
       cam.forward = direction(m, c.mLookAt);
       cam.up = direction(m, c.mUp);
-      // assimp 5.2.5's mHorizontalFOV is the whole angle for most formats,
-      // half of it for FBX, and glTF's vertical angle times the aspect ratio
-      // (sim/io/README.md "Cameras"). GIRTD's screen is square.
+      // assimp 5.2.5's mHorizontalFOV is the whole horizontal angle (Collada,
+      // 3DS and FBX measured), for glTF the vertical angle times the aspect
+      // ratio (sim/io/README.md "Materials, cameras and lights"). GIRTD's
+      // screen is square: that angle spans it.
       double fov = c.mHorizontalFOV;
-      if (ext == ".fbx") fov *= 2;
       if (gltf() && c.mAspect > 0) fov /= c.mAspect;
       cam.fov_deg = fov * 180.0 / M_PI;
       cam.near = std::isfinite(c.mClipPlaneNear) && c.mClipPlaneNear > 0 ? c.mClipPlaneNear : 0;
@@ -350,9 +352,14 @@ std::optional<PrecheckResult> check_file(const std::string& path, std::vector<st
 }
 
 // What assimp read, built and checked; its log's warnings after the model's.
+// `library_lost`: imported without its material library, so every material
+// is one assimp made up for a usemtl.
 ImportedModel build(const std::string& path, const aiScene& scene, const std::optional<PrecheckResult>& checked,
-                    const MessageLog& log, std::vector<std::string>& warnings) {
-  MeshBuilder b(path, scene, checked ? checked->undefined_materials : std::set<std::string>{});
+                    bool library_lost, const MessageLog& log, std::vector<std::string>& warnings) {
+  MadeUpMaterials made_up;
+  made_up.all = library_lost;
+  if (checked) made_up.names = checked->undefined_materials;
+  MeshBuilder b(path, scene, made_up);
   b.add(*scene.mRootNode, aiMatrix4x4());
   std::vector<std::string> look;
   ImportedModel model = b.take(checked ? std::optional<uint64_t>(checked->polygons) : std::nullopt, look);
@@ -372,7 +379,7 @@ ImportedModel assimp_import(const std::string& path, const std::optional<Prechec
     Assimp::Importer importer;
     importer.SetIOHandler(new RegularFilesOnly());  // the importer owns it
     const aiScene* scene = importer.ReadFile(path, flags);
-    if (scene && scene->mRootNode && log.first_error().empty()) return build(path, *scene, checked, log, warnings);
+    if (scene && scene->mRootNode && log.first_error().empty()) return build(path, *scene, checked, false, log, warnings);
     if (!checked) {
       if (!scene || !scene->mRootNode) fail_assimp(path, importer);
       fail(path, 0, "cannot read the model: " + log.first_error());
@@ -390,7 +397,7 @@ ImportedModel assimp_import(const std::string& path, const std::optional<Prechec
   while (!with_its_files.empty() && std::isspace(static_cast<unsigned char>(with_its_files.back()))) with_its_files.pop_back();
   warnings.push_back(path + ": the files it names (its material library) could not be read (" + with_its_files +
                      "): drawn with the default material");
-  return build(path, *scene, checked, log, warnings);
+  return build(path, *scene, checked, true, log, warnings);
 }
 
 }  // namespace

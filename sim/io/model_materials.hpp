@@ -10,6 +10,7 @@
 // frontend/README.md "Textures" weighs this against the alternatives.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
@@ -23,11 +24,17 @@
 
 namespace girtd {
 
+// Materials the importer made up although the file names them: an OBJ's
+// usemtl that no library defines (`names`), or every one when the library
+// could not be read (`all`).
+struct MadeUpMaterials {
+  std::set<std::string> names;
+  bool all = false;
+};
+
 class ModelLook {
  public:
-  // `made_up`: names of materials the importer made up although the file
-  // names them (an OBJ's usemtl that no library defines).
-  ModelLook(const aiScene& scene, const std::string& model_path, const std::set<std::string>& made_up = {});
+  ModelLook(const aiScene& scene, const std::string& model_path, const MadeUpMaterials& made_up = {});
 
   // One per aiMaterial; nullopt for a material the importer made up (the
   // file has none): the default material is drawn.
@@ -45,8 +52,10 @@ class ModelLook {
  private:
   struct Image {
     int width = 0, height = 0;
-    std::vector<float> rgb;  // 0..1, row 0 at the top
+    std::vector<uint8_t> rgb;  // row 0 at the top
   };
+  // 8192 x 8192: 192 MiB as decoded, twice that while it is copied.
+  static constexpr uint64_t kMaxTexels = uint64_t(1) << 26;
   const Image* image(const std::string& name);
   void note(const std::string& what) { notes_[what]++; }
 
@@ -56,6 +65,7 @@ class ModelLook {
   std::vector<std::string> texture_of_;  // per material: its diffuse texture's name, or ""
   std::map<std::string, std::optional<Image>> images_;
   std::map<std::string, int> notes_;
+  std::vector<std::string> unreadable_, too_large_;  // texture names, each once (images_ caches)
 };
 
 }  // namespace girtd

@@ -6,6 +6,10 @@
 
 namespace girtd {
 
+// A scene's focal distance C (scene units), as a trace's `focal` takes it too.
+inline constexpr double kMinFocalDistance = 1e-9;
+inline constexpr double kMaxFocalDistance = 1e12;
+
 // Defaults for what a scene leaves out (and for a bare model), documented in
 // models/frontend/README.md.
 struct SceneDefaults {

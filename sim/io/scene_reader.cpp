@@ -1,5 +1,6 @@
 #include "io/scene_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -167,13 +168,18 @@ struct PlacedCamera {
 std::optional<PlacedCamera> file_camera(const std::vector<Instance>& instances, const std::string& name,
                                         const std::string& option, std::vector<std::string>& warnings) {
   std::vector<std::string> seen;
+  std::string passed_over;  // orthographic cameras, named in one warning
+  auto warn_passed_over = [&] {
+    if (!passed_over.empty())
+      warnings.push_back("orthographic cameras passed over (GIRTD projects in perspective only): " + passed_over);
+  };
   for (const Instance& in : instances)
     for (const ModelCamera& c : in.model->cameras) {
       seen.push_back(c.name);
       if (!name.empty() && c.name != name) continue;
       if (c.orthographic) {
         if (!name.empty()) throw InputError(option, 0, "camera \"" + name + "\" is orthographic: GIRTD projects in perspective only");
-        warnings.push_back(in.name + ": orthographic camera \"" + c.name + "\" passed over (GIRTD projects in perspective only)");
+        passed_over += (passed_over.empty() ? "" : ", ") + in.name + " \"" + c.name + "\"";
         continue;
       }
       ModelCamera placed = c;
@@ -185,8 +191,18 @@ std::optional<PlacedCamera> file_camera(const std::vector<Instance>& instances, 
         if (!name.empty()) throw InputError(option, 0, "camera \"" + name + "\" has no view direction");
         continue;
       }
-      return PlacedCamera{*cam, c.near > 0 ? std::optional<double>(c.near) : std::nullopt};
+      warn_passed_over();
+      std::optional<double> near;
+      if (c.near > 0) {
+        // The scene's own range of focal_distance, so that a dump replays.
+        near = std::clamp(c.near, kMinFocalDistance, kMaxFocalDistance);
+        if (*near != c.near)
+          warnings.push_back(in.name + ": camera \"" + c.name + "\"'s near plane " + std::to_string(c.near) +
+                             " taken as " + std::to_string(*near) + " (the focal distance's range)");
+      }
+      return PlacedCamera{*cam, near};
     }
+  warn_passed_over();
   if (name.empty()) return std::nullopt;
   std::string list;
   for (const std::string& n : seen) list += (list.empty() ? "" : ", ") + ("\"" + n + "\"");
@@ -244,7 +260,7 @@ class SceneReader {
     WorldFrame base;
     base.cull_back_faces = root_.contains("cull_back_faces") ? boolean(root / "cull_back_faces") : false;
     std::optional<double> focal;
-    if (root_.contains("focal_distance")) focal = number(root / "focal_distance", 1e-9, 1e12);
+    if (root_.contains("focal_distance")) focal = number(root / "focal_distance", kMinFocalDistance, kMaxFocalDistance);
     const std::map<std::string, Surface> materials = read_materials();
     std::vector<Instance> instances = read_models(materials);
     // The scene's lights and camera, else the model files' own, else the defaults.

@@ -19,9 +19,10 @@ enum class TraceLevel { kTriangle, kDda, kPolygon, kThesis };
 // A polygon trace's `lights` record holds at most this many directional lights.
 inline constexpr int64_t kMaxTraceLights = 64;
 // A trace file's bounds (an endless stream stops at them): a line (a vpoly
-// of 65,536 corners at 17 digits a number is about 10 MiB), the whole file.
+// of 65,536 corners at 17 digits a number is about 10 MiB), the whole file
+// (2 GiB: some 20 million triangles).
 inline constexpr uint64_t kMaxTraceLineBytes = uint64_t(64) << 20;
-inline constexpr uint64_t kMaxTraceBytes = uint64_t(16) << 30;
+inline constexpr uint64_t kMaxTraceBytes = uint64_t(2) << 30;
 
 const char* level_name(TraceLevel level);
 // Throws InputError(origin, line, ...) for an unknown name.

@@ -74,7 +74,7 @@ class BoundedLines {
       line.append(start, take);
       pos_ += take + (eol ? 1 : 0);
       if (line.size() > kMaxTraceLineBytes)
-        throw InputError(path_, number_ + 1, "a line longer than " + std::to_string(kMaxTraceLineBytes >> 20) +
+        throw InputError(path_, number() + 1, "a line longer than " + std::to_string(kMaxTraceLineBytes >> 20) +
                                                  " MiB (the limit of a trace line)");
       if (eol) break;
     }
@@ -82,18 +82,19 @@ class BoundedLines {
     ++number_;
     read_ += line.size() + 1;
     if (read_ > kMaxTraceBytes)
-      throw InputError(path_, number_, "larger than " + std::to_string(kMaxTraceBytes >> 30) +
+      throw InputError(path_, number(), "larger than " + std::to_string(kMaxTraceBytes >> 30) +
                                            " GiB, the limit of a trace (or an endless stream)");
     return true;
   }
-  int number() const { return number_; }
+  // Saturated: a 2 GiB trace of empty lines would count one past int.
+  int number() const { return static_cast<int>(std::min<int64_t>(number_, INT32_MAX - 1)); }
 
  private:
   std::streambuf& in_;
   const std::string& path_;
   char buffer_[1 << 16];
   size_t pos_ = 0, end_ = 0;
-  int number_ = 0;
+  int64_t number_ = 0;
   uint64_t read_ = 0;
 };
 

@@ -30,10 +30,14 @@ sha() { jq -r .image_sha256 "$1/report.json"; }
 # (X, Y, 0) lands at x = 512 + 512 * 2.365 * X / 5 = 512 + 242.2 X. The red
 # quad (X -2..-0.2) covers x 28..464, the blue one (0.2..2) 560..996, both
 # y 270..754. Lighting: the point light at (0, 0, 10) becomes a light from
-# +z, its intensity normalised to 0.75 beside an ambient 0.25; red's own
+# +z, its intensity normalised to 0.75 beside an ambient 0.25; a quad's own
 # channel saturates (0.25 + 0.75 cos 0 = 1); the others hold only the
-# specular term, CRE(~0 deg) 0.30 x (R.E)^1 x 0.75 x 255 = 57 x R.E, with
-# R.E from 0.91 (the far corners) to 1: 52..57 inside.
+# specular term, CRE(~0 deg) 0.30 x (R.E)^n x 0.75 x 255 = 57 x (R.E)^n,
+# Gouraud-interpolated from the corners. Red: roughness 1, n = 2/1 - 2 = 0,
+# clamped to 1; R.E from 0.91 (the far corners) to 1: 52..57 inside. Blue:
+# roughness 0.5, n = 2/0.5^4 - 2 = 30; R.E is 0.981 at the inner corners
+# (31) and 0.913 at the outer ones (3.7); the quad's centre lies on the
+# diagonal between an inner and an outer corner: (31 + 3.7) / 2 = 17.
 gltf=$dir/two_materials.gltf
 for backend in golden approx rtl; do
   "$GIRTD" render "$gltf" --backend "$backend" --out "$TMP/tm-$backend" --quiet 2> "$TMP/tm-$backend.err" \
@@ -41,14 +45,20 @@ for backend in golden approx rtl; do
 done
 png=$TMP/tm-golden/frame.png
 expect "front, red quad" "$png" 246 512 'r >= 250 and 45 <= g <= 60 and abs(g - b) <= 2'
-expect "front, blue quad" "$png" 778 512 'b >= 250 and 45 <= r <= 60 and abs(r - g) <= 2'
+expect "front, blue quad" "$png" 778 512 'b >= 250 and 14 <= r <= 21 and abs(r - g) <= 1'
 expect "front, gap between the quads" "$png" 512 512 'r == g == b == 0'
 expect "front, above the quads" "$png" 246 200 'r == g == b == 0'
 [[ $(sha "$TMP/tm-golden") == $(sha "$TMP/tm-approx") && $(sha "$TMP/tm-golden") == $(sha "$TMP/tm-rtl") ]] \
   && ok || bad "golden, approx and rtl draw two_materials.gltf differently"
 grep -q 'PBR metal/roughness approximated' "$TMP/tm-golden.err" && ok || bad "no PBR warning: $(cat "$TMP/tm-golden.err")"
 
-# The second camera, "far", at (0, 0, 10): 121.1 px per unit, the red
+# The materials' exponents, as the polygon dump records them.
+"$GIRTD" render "$gltf" --dump "polygons=$TMP/tm.poly" --out "$TMP/tm-dump" --quiet 2>/dev/null || bad "dump failed"
+[[ $(awk '$1 == "surface" { print $2, $6 }' "$TMP/tm.poly" | tr '\n' ' ') == "0 1 1 30 " ]] && ok \
+  || bad "surface exponents: $(grep '^surface' "$TMP/tm.poly")"
+
+# The second camera, "far", at (0, 0, 10) (its aspect ratio 2 changes
+# nothing: the vertical angle spans the square screen): 121.1 px per unit, the red
 # quad's centre (X -1.1) at x 379, the blue one's at 645, their inner
 # edges at 488 and 536.
 "$GIRTD" render "$gltf" --camera far --out "$TMP/far" --quiet 2>/dev/null || bad "--camera far failed"
@@ -62,6 +72,12 @@ expect "far, left of the red quad" "$TMP/far/frame.png" 246 512 'r == g == b == 
 rc=$?
 [[ $rc -eq 2 && $(wc -l < "$TMP/nope.err") -eq 1 && ! -e $TMP/nope ]] && grep -q '"front", "far"' "$TMP/nope.err" \
   && ok || bad "--camera nope: exit $rc, $(cat "$TMP/nope.err")"
+# A name the file gives holding a newline is written \x0a: still one line.
+jq '.nodes[2].name = "fr\nont"' "$gltf" > "$TMP/newline.gltf"
+"$GIRTD" render "$TMP/newline.gltf" --camera nope --out "$TMP/nope" > /dev/null 2> "$TMP/nope.err"
+rc=$?
+[[ $rc -eq 2 && $(wc -l < "$TMP/nope.err") -eq 1 ]] && grep -q 'fr\\x0aont' "$TMP/nope.err" \
+  && ok || bad "a camera name with a newline: exit $rc, $(cat "$TMP/nope.err")"
 "$GIRTD" render traces/scenes/polygons.poly --camera front --out "$TMP/trace" 2> "$TMP/trace.err"
 [[ $? -eq 2 && $(wc -l < "$TMP/trace.err") -eq 1 ]] && ok || bad "--camera on a trace: $(cat "$TMP/trace.err")"
 
@@ -117,12 +133,25 @@ expect "texture, left square" "$TMP/tx/frame.png" 203 512 'r == 255 and g == b =
 expect "texture, right square" "$TMP/tx/frame.png" 821 512 'b == 255 and r == g == 0'
 grep -q 'textures are drawn as their mean colour over each face' "$TMP/tx.err" && ok || bad "no texture warning"
 
-# A material library assimp cannot read: a warning, the default material.
+# A material library assimp cannot read: a warning, the default material:
+# the frame of the same square without a library.
 "$GIRTD" render "$dir/broken_library.obj" --out "$TMP/broken" --quiet 2> "$TMP/broken.err" \
   || bad "broken_library.obj failed: $(cat "$TMP/broken.err")"
+grep -v 'mtllib\|usemtl' "$dir/broken_library.obj" > "$TMP/plain.obj"
+"$GIRTD" render "$TMP/plain.obj" --out "$TMP/plain" --quiet || bad "the plain square failed"
+[[ $(sha "$TMP/broken") == $(sha "$TMP/plain") ]] && ok || bad "broken_library.obj is not drawn with the default material"
 grep -q 'broken_library.obj: the files it names (its material library) could not be read' "$TMP/broken.err" \
   && ok || bad "no broken-library warning: $(cat "$TMP/broken.err")"
 jq -e 'any(.warnings[]; test("could not be read"))' "$TMP/broken/report.json" > /dev/null \
   && ok || bad "the broken-library warning is not in report.json"
 expect "broken library, the default grey" "$TMP/broken/frame.png" 512 512 'r == g == b > 0'
+
+# An FBX camera: FieldOfView 49.134 deg in global_settings.fbx of assimp's
+# test models, so D/S = 1 / tan(24.567 deg) = 2.1874.
+fbx=/usr/share/assimp/models/FBX/global_settings.fbx
+if [[ -f $fbx ]]; then
+  "$GIRTD" render "$fbx" --dump "polygons=$TMP/fbx.poly" --out "$TMP/fbx" --quiet 2>/dev/null || bad "$fbx failed"
+  awk '$1 == "camera" { d = $NF - 2.1874; exit !(d < 0.001 && d > -0.001) }' "$TMP/fbx.poly" && ok \
+    || bad "FBX camera: $(grep '^camera' "$TMP/fbx.poly")"
+fi
 finish

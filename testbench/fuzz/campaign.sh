@@ -15,8 +15,8 @@ TARGETS=("$@")
 ((${#TARGETS[@]})) || TARGETS=(trace scene config sweep_spec obj off ply stl)
 RUNS="${RUNS:-1000000}"
 # assimp's own leaks on refused input are suppressed here, not in the replays
-# (campaign_lsan.supp says why); "suppressed" in the output counts them.
-export LSAN_OPTIONS="suppressions=$ROOT/testbench/fuzz/campaign_lsan.supp"
+# (assimp_leaks.supp says why); "suppressed" in the output counts them.
+export LSAN_OPTIONS="suppressions=$ROOT/testbench/fuzz/assimp_leaks.supp"
 SECONDS_PER_TARGET="${SECONDS_PER_TARGET:-600}"
 
 # Model imports run at ~70 executions/s on 10-30 KB inputs (assimp builds

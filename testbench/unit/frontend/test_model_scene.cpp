@@ -3,6 +3,7 @@
 // worked out by hand from the rules in sim/io/README.md.
 #include <catch2/catch.hpp>
 
+#include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
@@ -58,6 +59,8 @@ TEST_CASE("model materials: colour, shininess, roughness and opacity", "[fronten
   aiMaterial* rough = material("rough");
   const float roughness = 0.5f;  // n = 2 / 0.5^4 - 2 = 30
   rough->AddProperty(&roughness, 1, AI_MATKEY_ROUGHNESS_FACTOR);
+  const float made_up_shininess = 250;  // assimp's glTF reader writes (1 - r)^2 x 1000 beside it
+  rough->AddProperty(&made_up_shininess, 1, AI_MATKEY_SHININESS);
   const float quarter = 0.25f;  // opacity 0.25: Tf = 0.75 at every angle
   rough->AddProperty(&quarter, 1, AI_MATKEY_OPACITY);
 
@@ -65,10 +68,21 @@ TEST_CASE("model materials: colour, shininess, roughness and opacity", "[fronten
   const float zero = 0;
   invisible->AddProperty(&zero, 1, AI_MATKEY_OPACITY);
 
-  MaterialScene s({plain, rough, invisible, material(AI_DEFAULT_MATERIAL_NAME)});
+  // glTF: alpha is a transparency in BLEND mode only.
+  const aiColor4D half_alpha(1.0f, 1.0f, 1.0f, 0.5f);
+  aiMaterial* opaque_mode = material("opaque_mode");
+  opaque_mode->AddProperty(&half_alpha, 1, AI_MATKEY_BASE_COLOR);
+  aiString opaque("OPAQUE");
+  opaque_mode->AddProperty(&opaque, AI_MATKEY_GLTF_ALPHAMODE);
+  aiMaterial* blend_mode = material("blend_mode");
+  blend_mode->AddProperty(&half_alpha, 1, AI_MATKEY_BASE_COLOR);
+  aiString blend("BLEND");
+  blend_mode->AddProperty(&blend, AI_MATKEY_GLTF_ALPHAMODE);
+
+  MaterialScene s({plain, rough, invisible, material(AI_DEFAULT_MATERIAL_NAME), opaque_mode, blend_mode});
   ModelLook look(s.scene, "/nowhere/model.obj");
   const auto& got = look.surfaces();
-  REQUIRE(got.size() == 4);
+  REQUIRE(got.size() == 6);
   REQUIRE(got[0]);
   CHECK(got[0]->r == Approx(255));
   CHECK(got[0]->g == Approx(127.5));
@@ -83,6 +97,11 @@ TEST_CASE("model materials: colour, shininess, roughness and opacity", "[fronten
   REQUIRE(got[2]);
   CHECK(got[2]->t_max == 0);  // opacity 0 is drawn opaque
   CHECK_FALSE(got[3]);        // assimp's filler: the scene's default material
+  REQUIRE(got[4]);
+  CHECK(got[4]->t_max == 0);
+  REQUIRE(got[5]);
+  CHECK(got[5]->t_min == Approx(0.5));
+  CHECK(got[5]->t_max == Approx(0.5));
   const std::vector<std::string> notes = look.warnings();
   CHECK(has(notes, "roughness sets the specular exponent"));
   CHECK(has(notes, "opacity 0 (invisible) is drawn opaque"));

@@ -23,8 +23,9 @@ def write(name, data):
 def gltf_two_materials():
     """Two quads in the plane z = 0 facing +z: red at x -2..-0.2, blue at
     x 0.2..2, y -1..1. Cameras "front" at (0, 0, 5) and "far" at (0, 0, 10),
-    both looking down -z with a vertical field of view of 0.8 rad; a point
-    light (KHR_lights_punctual) at (0, 0, 10); roughness 1, metalness 0."""
+    both looking down -z with a vertical field of view of 0.8 rad ("far"
+    with an aspect ratio of 2); a point light (KHR_lights_punctual) at
+    (0, 0, 10); metalness 0, roughness 1 (red) and 0.5 (blue)."""
     quads = [(-2.0, -0.2), (0.2, 2.0)]
     positions = b""
     for x0, x1 in quads:
@@ -41,6 +42,7 @@ def gltf_two_materials():
     views.append({"buffer": 0, "byteOffset": 96, "byteLength": 12, "target": 34963})
     accessors.append({"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"})
     perspective = {"aspectRatio": 1.0, "yfov": 0.8, "znear": 0.1, "zfar": 100}
+    wide = dict(perspective, aspectRatio=2.0)
     doc = {
         "asset": {"version": "2.0", "generator": "girtd make_file_scenes.py"},
         "extensionsUsed": ["KHR_lights_punctual"],
@@ -56,13 +58,13 @@ def gltf_two_materials():
             {"name": "lamp", "translation": [0, 0, 10], "extensions": {"KHR_lights_punctual": {"light": 0}}},
         ],
         "cameras": [{"name": "front", "type": "perspective", "perspective": perspective},
-                    {"name": "far", "type": "perspective", "perspective": perspective}],
+                    {"name": "far", "type": "perspective", "perspective": wide}],
         "meshes": [{"primitives": [{"attributes": {"POSITION": q}, "indices": 2, "material": q}]} for q in range(2)],
         "materials": [
             {"name": "red", "pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 1], "metallicFactor": 0,
                                                      "roughnessFactor": 1}},
             {"name": "blue", "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 1, 1], "metallicFactor": 0,
-                                                      "roughnessFactor": 1}},
+                                                      "roughnessFactor": 0.5}},
         ],
         "accessors": accessors,
         "bufferViews": views,
