@@ -59,7 +59,7 @@ py::array_t<uint16_t> z_array(const std::vector<uint16_t>& z, int width, int hei
 // girtd.InputError(formatted, file, line, message), raised from the C++ one.
 [[noreturn]] void raise_input_error(const girtd::InputError& e) {
   py::object cls = py::module_::import("girtd").attr("InputError");
-  py::object err = cls(e.formatted(), e.file(), e.line(), std::string(e.what()));
+  py::object err = cls(e.formatted(), girtd::one_line(e.file()), e.line(), girtd::one_line(e.what()));
   PyErr_SetObject(cls.ptr(), err.ptr());
   throw py::error_already_set();
 }
@@ -75,7 +75,7 @@ py::dict render(const std::string& request_json) {
   }
   if (r.problem) raise_input_error(*r.problem);
   py::dict out;
-  out["report"] = r.report.dump();
+  out["report"] = r.report.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   out["frame"] = rgb_array(r.frame);
   out["z"] = z_array(r.z, r.frame.width, r.frame.height);
   py::list frames;

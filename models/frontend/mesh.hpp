@@ -22,7 +22,7 @@ struct Mesh {
   // Empty, or one per polygon: its material's index in the importer's list.
   std::vector<int> material;
   // Empty, or one per corner, polygon after polygon (corner k of polygon i
-  // at polygon_corner_offset(i) + k): the corner's own diffuse colour.
+  // after the corners of polygons 0..i-1): the corner's own diffuse colour.
   std::vector<CornerColour> corner_colour;
 };
 

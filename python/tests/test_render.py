@@ -79,3 +79,18 @@ def test_warnings_go_through_sys_stderr(capsys):
     assert capsys.readouterr().err == "".join("warning: %s\n" % w for w in r["warnings"])
     girtd.render(os.path.join(ROOT, "traces", "scenes", "near_clip.json"), print_warnings=False)
     assert capsys.readouterr().err == ""
+
+
+def test_a_model_files_camera_by_name():
+    # traces/models/file_scenes/two_materials.gltf: camera "far" at (0, 0, 10),
+    # vertical field of view 0.8 rad: 512 x 2.365 / 10 = 121.1 px per unit,
+    # the red quad's centre (X -1.1) at x 379, the blue one's at 645.
+    gltf = os.path.join(ROOT, "traces", "models", "file_scenes", "two_materials.gltf")
+    far = girtd.render(gltf, camera="far", print_warnings=False)
+    red, blue, gap = far.frame[512, 379], far.frame[512, 645], far.frame[512, 512]
+    assert red[0] >= 250 and red[1] < 70
+    assert blue[2] >= 250 and blue[0] < 70
+    assert not gap.any()
+    with pytest.raises(girtd.InputError) as caught:
+        girtd.render(gltf, camera="nope")
+    assert caught.value.file == "--camera" and '"front", "far"' in caught.value.message

@@ -180,7 +180,7 @@ RenderResult render(const RenderRequest& a) {
   ctx.input = a.input;
   ctx.level = level_name(input.polygons ? TraceLevel::kPolygon : input.trace.level);
   ctx.image_sha256 = sha256_hex(out.shown.rgb);
-  ctx.warnings = input_warnings;
+  for (const std::string& w : input_warnings) ctx.warnings.push_back(one_line(w));
   std::vector<std::optional<std::string>> run_warnings = {
       limit_warning(a.input, out.stats, params), seam_warning(a.input, out.stats), culling_warning(a.input, out.stats)};
   // Sampled timing draws part of the frame: never a silently incomplete picture.
@@ -188,7 +188,7 @@ RenderResult render(const RenderRequest& a) {
   for (const auto& w : run_warnings)
     if (w) {  // a hardware limit hit or a seam: counted and warned
       warn(*w);
-      ctx.warnings.push_back(*w);
+      ctx.warnings.push_back(one_line(*w));
     }
   if (entry.has(kRunsRtl)) ctx.rtl_build = built_rtl_key();
   ctx.front_end_passes = front_end_passes() - passes_before;

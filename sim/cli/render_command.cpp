@@ -85,7 +85,8 @@ int run_render(const RenderArgs& a) {
   }
   if (a.z_png)
     files.add("z.png", [&](const std::string& p) { write_png_gray16(p, out.frame.width, out.frame.height, out.z); });
-  files.add_text("report.json", report.dump(2) + "\n");
+  // A path holding a byte of no UTF-8 character is replaced, not fatal.
+  files.add_text("report.json", report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   files.add_text("report.md", report_markdown(report));
   std::optional<FrameComparison> compare;
   if (!a.compare.empty()) {  // the same input on the picture yardstick, in this process (it is untimed)

@@ -50,6 +50,15 @@ timeout 120 "$GIRTD" render traces/equilateral_200.trace --config /dev/zero --ou
 [[ $rc -eq 2 && ! -e "$TMP/zero" && $(wc -l < "$TMP/err") -eq 1 ]] && grep -q "^/dev/zero: larger than 256 MiB" "$TMP/err" \
   && ok || bad "/dev/zero as a configuration: exit $rc: $(head -c 300 "$TMP/err")"
 
+# A name a file gives may hold bytes of no UTF-8 character (the mutation
+# campaign's two crashes: report.json could not be written, exit 3): the
+# warning writes them \xNN, on stderr and in report.json alike.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl \xff\xfe\nf 1 2 3\n' > "$TMP/bad_utf8.obj"
+"$GIRTD" render "$TMP/bad_utf8.obj" --out "$TMP/bad_utf8" --quiet 2> "$TMP/err"; rc=$?
+[[ $rc -eq 0 ]] && grep -qF "usemtl '\xff\xfe'" "$TMP/err" \
+  && [[ $(jq -r '.warnings[0]' "$TMP/bad_utf8/report.json") == "$(sed -n 's/^warning: //p' "$TMP/err")" ]] \
+  && ok || bad "bytes of no UTF-8 character in a warning: exit $rc: $(head -c 300 "$TMP/err")"
+
 "$GIRTD" render traces/equilateral_200.trace --backend nosuch --out "$TMP/nosuch" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 && ! -e "$TMP/nosuch" && $(wc -l < "$TMP/err") -eq 1 ]] && grep -q "backend" "$TMP/err" && ok \
   || bad "unknown back end gave exit $rc: $(cat "$TMP/err")"

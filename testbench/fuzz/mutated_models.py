@@ -4,10 +4,10 @@ and 3DS files through `girtd render`, as a user would hand them over.
 
 Every run must end in one of two ways: exit 0 with a report (stderr only
 `warning: ` lines), or exit 2 with one stderr line naming the file and no
-output directory. Anything else is a finding: a crash (a signal, exit 3 or
-more), a hang (past --timeout, 90 s: the import's own limit is 60 s), a
-refusal of several lines, or one that does not name the file, or output
-left behind. Findings' inputs are kept in OUT/findings/.
+output directory. Anything else is a finding: a crash (a signal, or an
+exit code other than 0 and 2), a hang (past --timeout, 90 s: the import's
+own limit is 60 s), a refusal of several lines, or one that does not name
+the file, or output left behind. Findings' inputs are kept in OUT/findings/.
 
 Seeds are the files of those formats in Debian's assimp-testmodels under
 2 MB (each mutated in a copy of its folder, so that its .bin, textures and
@@ -174,43 +174,36 @@ def main():
                 data = mutate(f.read(), rng, by_format[os.path.splitext(seed)[1].lower()])
             yield i, seed, data
 
+    def record(fut):
+        seed, (outcome, detail, path) = fut.result()
+        fmt = FORMATS[os.path.splitext(seed)[1].lower()]
+        counts[fmt][outcome] += 1
+        if outcome == "refused":
+            reasons[fmt][re.sub(r"^.*?: ", "", detail)[:60]] += 1
+        if outcome in ("crash", "hang", "finding"):
+            kept = os.path.join(findings, "%s_%d%s" % (outcome, len(found), os.path.splitext(path)[1]))
+            shutil.copy(path, kept)
+            found.append("%s %s: %s (seed %s)" % (outcome, kept, detail, seed))
+            print("FINDING:", found[-1], flush=True)
+        shutil.rmtree(os.path.dirname(path), ignore_errors=True)
+
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         pending = set()
-        feed = jobs()
         done = 0
-        for i, seed, data in feed:
+        for i, seed, data in jobs():
             pending.add(pool.submit(lambda a: (a[1], run_one(girtd, *a, work, args.timeout)), (i, seed, data)))
             if len(pending) < 2 * args.jobs:
                 continue
             finished, pending = concurrent.futures.wait(pending, return_when=concurrent.futures.FIRST_COMPLETED)
             for fut in finished:
+                record(fut)
                 done += 1
-                seed, (outcome, detail, path) = fut.result()
-                fmt = FORMATS[os.path.splitext(seed)[1].lower()]
-                counts[fmt][outcome] += 1
-                if outcome == "refused":
-                    reasons[fmt][re.sub(r"^.*?: ", "", detail)[:60]] += 1
-                if outcome in ("crash", "hang", "finding"):
-                    kept = os.path.join(findings, "%s_%d%s" % (outcome, len(found), os.path.splitext(path)[1]))
-                    shutil.copy(path, kept)
-                    found.append("%s %s: %s (seed %s)" % (outcome, kept, detail, seed))
-                    print("FINDING:", found[-1], flush=True)
-                shutil.rmtree(os.path.dirname(path), ignore_errors=True)
                 if done % 200 == 0:
                     rate = done / (time.time() - start)
                     print("%d / %d runs, %.1f runs/s, ETA %d s, %d findings" %
                           (done, args.runs, rate, (args.runs - done) / rate, len(found)), flush=True)
         for fut in concurrent.futures.as_completed(pending):
-            seed, (outcome, detail, path) = fut.result()
-            fmt = FORMATS[os.path.splitext(seed)[1].lower()]
-            counts[fmt][outcome] += 1
-            if outcome == "refused":
-                reasons[fmt][re.sub(r"^.*?: ", "", detail)[:60]] += 1
-            if outcome in ("crash", "hang", "finding"):
-                kept = os.path.join(findings, "%s_%d%s" % (outcome, len(found), os.path.splitext(path)[1]))
-                shutil.copy(path, kept)
-                found.append("%s %s: %s (seed %s)" % (outcome, kept, detail, seed))
-            shutil.rmtree(os.path.dirname(path), ignore_errors=True)
+            record(fut)
 
     lines = ["| format | seeds | runs | rendered | refused (one line, exit 2) | crashes | hangs | other findings | commonest refusals |",
              "|---|---|---|---|---|---|---|---|---|"]
