@@ -9,7 +9,7 @@
 
 namespace girtd {
 
-SurfaceGroups surface_groups(const Mesh& mesh, double crease_deg) {
+SurfaceGroups surface_groups(const Mesh& mesh, double crease_deg, bool split_materials) {
   const size_t n = mesh.polygons.size();
   std::vector<size_t> parent(n);
   std::iota(parent.begin(), parent.end(), size_t{0});
@@ -35,7 +35,7 @@ SurfaceGroups surface_groups(const Mesh& mesh, double crease_deg) {
       if (fresh) continue;
       const size_t j = it->second;
       // Two materials are two surfaces, however smooth the edge between them.
-      const bool same_material = mesh.material.empty() || mesh.material[i] == mesh.material[j];
+      const bool same_material = !split_materials || mesh.material.empty() || mesh.material[i] == mesh.material[j];
       if (same_material && dot(normal[i], normal[j]) >= min_cos) parent[find(i)] = find(j);
     }
   }

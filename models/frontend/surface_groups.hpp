@@ -3,7 +3,7 @@
 // `crease_deg`. A cube (90 deg edges) becomes 6 flat surfaces with the
 // default crease, a finely tessellated sphere one smooth surface; 180 makes
 // every connected piece smooth, 0 every polygon flat. Polygons of different
-// materials (Mesh::material) never share a surface.
+// materials (Mesh::material) never share a surface, while they are drawn.
 #pragma once
 
 #include <vector>
@@ -21,6 +21,8 @@ struct SurfaceGroups {
   int count = 0;
 };
 
-SurfaceGroups surface_groups(const Mesh& mesh, double crease_deg);
+// `split_materials` false: the materials are not drawn (a scene names its
+// own), so their borders split nothing.
+SurfaceGroups surface_groups(const Mesh& mesh, double crease_deg, bool split_materials = true);
 
 }  // namespace girtd

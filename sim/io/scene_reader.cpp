@@ -527,7 +527,7 @@ class SceneReader {
         chosen = it->second;
       }
       const double crease = at(mp).contains("crease_deg") ? number(mp / "crease_deg", 0, 180) : kDefaultCreaseDeg;
-      in.groups = surface_groups(in.mesh(), crease);
+      in.groups = surface_groups(in.mesh(), crease, !chosen);
       choose_surfaces(in, chosen);
       transform_keys(mp, in.transform);
       out.push_back(std::move(in));

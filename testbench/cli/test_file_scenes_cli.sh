@@ -124,6 +124,15 @@ sed 's/"file": "[^"]*"/&, "material": "grey"/; s/"models"/"materials": {"grey": 
 "$GIRTD" render "$TMP/vc-grey.json" --out "$TMP/vc-grey" --quiet || bad "vertex colours with a scene material failed"
 expect "scene material over vertex colours" "$TMP/vc-grey/frame.png" 259 765 'r == g == b == 100'
 
+# A scene's material over a file's materials: they split no surface, so the
+# house with its library draws as the house without one.
+for f in house_mtl house; do
+  printf '{"girtd_scene": 1, "materials": {"grey": {"colour": [150, 150, 150]}},
+  "models": [{"file": "%s", "material": "grey"}]}\n' "$ROOT/traces/models/corpus/$f.obj" > "$TMP/$f.json"
+  "$GIRTD" render "$TMP/$f.json" --out "$TMP/$f" --quiet 2>/dev/null || bad "$f with a scene material failed"
+done
+[[ $(sha "$TMP/house_mtl") == $(sha "$TMP/house") ]] && ok || bad "a scene material did not replace the file's materials"
+
 # The OBJ's texture: the left square maps the red texel, the right one the
 # blue texel; Kd 1 1 1, so the faces are (255, 0, 0) and (0, 0, 255).
 # Their centres (X -+1.1) at x 203 and 821.
