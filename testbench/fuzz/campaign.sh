@@ -12,7 +12,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 BUILD="${1:-$ROOT/build}"
 shift || true
 TARGETS=("$@")
-((${#TARGETS[@]})) || TARGETS=(trace scene config sweep_spec obj off ply stl)
+((${#TARGETS[@]})) || TARGETS=(trace scene config sweep_spec obj off ply stl gltf dae)
 RUNS="${RUNS:-1000000}"
 # assimp's own leaks on refused input are suppressed here, not in the replays
 # (assimp_leaks.supp says why); "suppressed" in the output counts them.
@@ -21,7 +21,7 @@ SECONDS_PER_TARGET="${SECONDS_PER_TARGET:-600}"
 
 # Model imports run at ~70 executions/s on 10-30 KB inputs (assimp builds
 # every importer per import): shorter inputs buy more executions.
-max_len() { case "$1" in trace | scene | config | sweep_spec) echo 65536 ;; *) echo 8192 ;; esac; }
+max_len() { case "$1" in trace | scene | config | sweep_spec | gltf | dae) echo 65536 ;; *) echo 8192 ;; esac; }
 
 seeds() {
   case "$1" in
@@ -29,6 +29,8 @@ seeds() {
     scene) echo "$ROOT/traces/scenes" ;;
     config) echo "$ROOT/config" ;;
     sweep_spec) echo "$ROOT/traces/sweeps" ;;
+    gltf) echo "$ROOT/traces/models/file_scenes"; [[ -d /usr/share/assimp/models/glTF2 ]] && echo /usr/share/assimp/models/glTF2 ;;
+    dae) [[ -d /usr/share/assimp/models/Collada ]] && echo /usr/share/assimp/models/Collada || echo "$ROOT/traces/models/file_scenes" ;;
     *) echo "$ROOT/traces/models" ;;
   esac
 }
