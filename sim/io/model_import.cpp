@@ -192,6 +192,7 @@ class MeshBuilder {
       index_of[v] = it->second;
     }
     const unsigned material = am.mMaterialIndex < scene_.mNumMaterials ? am.mMaterialIndex : 0;
+    const int key = material_key(material);  // the same for every face of the mesh
     const Surface surface = material < look_.surfaces().size() && look_.surfaces()[material]
                                 ? *look_.surfaces()[material]
                                 : SceneDefaults::material();
@@ -243,7 +244,7 @@ class MeshBuilder {
         mesh.corner_colour.push_back(c.colour);
       }
       mesh.polygons.push_back(std::move(poly));
-      mesh.material.push_back(material_key(material));
+      mesh.material.push_back(key);
       any_corner_colour_ = any_corner_colour_ || vertex_colours || textured;
     }
   }

@@ -463,7 +463,6 @@ Trace read_trace(std::istream& in, const std::string& path, std::optional<TraceL
     }
     builder.record(p);
   }
-  if (in.bad()) throw InputError(path, line_no, "read error");
   if (!level) throw InputError(path, 0, "empty trace: no header and no records");
   Trace t = builder.finish(*level);
   if (t.primitive_count() == 0) throw InputError(path, line_no, "the trace holds no primitives");
