@@ -22,7 +22,7 @@
 #include "frontend/view_transform.hpp"
 #include "io/json_lines.hpp"
 #include "io/model_import.hpp"
-#include "io/model_lights.hpp"
+#include "io/scene_placement.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -34,41 +34,6 @@ namespace {
 constexpr int kSceneVersion = 1;
 constexpr size_t kMaxFrames = 100000;
 
-struct Transform {
-  Vec3 scale{1, 1, 1}, rotate_deg, translate;
-  // p' = translate + Rz Ry Rx (scale p): scale, then rotate about X, Y, Z, then move.
-  Vec3 apply(Vec3 p) const {
-    p = {p.x * scale.x, p.y * scale.y, p.z * scale.z};
-    p = rotate_z(rotate_y(rotate_x(p, rotate_deg.x * kDegToRad), rotate_deg.y * kDegToRad), rotate_deg.z * kDegToRad);
-    return p + translate;
-  }
-  // A direction: where the transform takes it, at unit length.
-  Vec3 turn(Vec3 d) const { return normalized(apply(d) - apply({0, 0, 0})); }
-  bool mirrors() const { return scale.x * scale.y * scale.z < 0; }
-};
-
-struct Instance {
-  std::string name;
-  std::shared_ptr<const ImportedModel> model;  // a file's, or a mesh given in the scene
-  SurfaceGroups groups;
-  std::vector<Surface> group_surface;  // each group's material
-  bool corner_colours = false;         // the model's own (not when the scene names a material)
-  Transform transform;
-  const Mesh& mesh() const { return model->mesh; }
-};
-
-// Each surface group's material: the scene's `chosen` one, else the file's,
-// else the default. The scene's material replaces the file's corner colours too.
-void choose_surfaces(Instance& in, const std::optional<Surface>& chosen) {
-  const Mesh& mesh = in.mesh();
-  in.group_surface.assign(size_t(in.groups.count), chosen ? *chosen : SceneDefaults::material());
-  in.corner_colours = !chosen && !mesh.corner_colour.empty();
-  if (chosen || mesh.material.empty()) return;
-  for (size_t i = 0; i < mesh.polygons.size(); ++i)  // a group holds one material (surface_groups.hpp)
-    if (const std::optional<Surface>& m = in.model->materials.at(size_t(mesh.material[i])))
-      in.group_surface[size_t(in.groups.group[i])] = *m;
-}
-
 // The camera as the scene gives it; "auto" frames the first frame's polygons.
 struct CameraSpec {
   bool automatic = true;
@@ -76,139 +41,6 @@ struct CameraSpec {
   std::optional<double> near;  // a model file's camera: its near clip plane
 };
 
-// Polygons, surfaces of every instance placed with its transform.
-void place(const std::vector<Instance>& instances, WorldFrame& w) {
-  for (const Instance& in : instances) {
-    const Mesh& mesh = in.mesh();
-    const int base = static_cast<int>(w.surfaces.size());
-    w.surfaces.insert(w.surfaces.end(), in.group_surface.begin(), in.group_surface.end());
-    std::vector<Vec3> moved;
-    moved.reserve(mesh.positions.size());
-    for (const Vec3& p : mesh.positions) moved.push_back(in.transform.apply(p));
-    w.objects.push_back({w.polygons.size(), mesh.polygons.size()});
-    size_t corner = 0;  // the polygon's first in mesh.corner_colour
-    for (size_t i = 0; i < mesh.polygons.size(); ++i) {
-      WorldPolygon poly;
-      poly.surface = base + in.groups.group[i];
-      for (int k : mesh.polygons[i]) poly.p.push_back(moved[static_cast<size_t>(k)]);
-      if (in.corner_colours)
-        poly.colour.assign(mesh.corner_colour.begin() + std::ptrdiff_t(corner),
-                           mesh.corner_colour.begin() + std::ptrdiff_t(corner + poly.p.size()));
-      corner += poly.p.size();
-      if (in.transform.mirrors()) {  // keep the front counter-clockwise
-        std::reverse(poly.p.begin(), poly.p.end());
-        std::reverse(poly.colour.begin(), poly.colour.end());
-      }
-      w.polygons.push_back(std::move(poly));
-    }
-  }
-}
-
-// The centre of the box around `points` (each a Vec3 handed to `visit`'s callback).
-template <class Visit>
-Vec3 box_centre(Visit visit) {
-  Vec3 lo{1e300, 1e300, 1e300}, hi = lo * -1.0;
-  visit([&](const Vec3& p) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  });
-  return (lo + hi) * 0.5;
-}
-
-// Looks at the bounding box's centre from SceneDefaults::auto_view_direction,
-// far enough that the bounding sphere fits the field of view.
-void auto_frame(WorldFrame& w, double fov_deg, std::optional<double> focal) {
-  const Vec3 centre = box_centre([&](auto&& see) {
-    for (const WorldPolygon& poly : w.polygons)
-      for (const Vec3& p : poly.p) see(p);
-  });
-  double radius = 0;
-  for (const WorldPolygon& poly : w.polygons)
-    for (const Vec3& p : poly.p) radius = std::max(radius, length(p - centre));
-  if (radius == 0) radius = 1;
-  const double dist = radius / std::sin(0.5 * fov_deg * M_PI / 180.0) * SceneDefaults::kAutoMargin;
-  const Vec3 eye = centre + normalized(SceneDefaults::auto_view_direction()) * dist;
-  w.camera = *camera_look_at(eye, centre, {0, 1, 0}, fov_deg);  // the view direction is never vertical
-  w.focal_distance = focal ? *focal : dist * SceneDefaults::kAutoFocalFraction;
-}
-
-LightSet default_lights() {
-  LightSet l;
-  l.ambient = SceneDefaults::kAmbient;
-  l.directional.push_back({normalized(SceneDefaults::light_toward()), SceneDefaults::kLightIntensity});
-  return l;
-}
-
-// The placed models' own lights, mapped together (model_lights.hpp), or nullopt.
-std::optional<LightSet> file_lights(const std::vector<Instance>& instances, std::vector<std::string>& warnings) {
-  std::vector<ModelLight> all;
-  for (const Instance& in : instances)
-    for (ModelLight l : in.model->lights) {
-      l.position = in.transform.apply(l.position);
-      l.direction = in.transform.turn(l.direction);
-      all.push_back(l);
-    }
-  if (all.empty()) return std::nullopt;
-  const Vec3 centre = box_centre([&](auto&& see) {
-    for (const Instance& in : instances)
-      for (const Vec3& p : in.mesh().positions) see(in.transform.apply(p));
-  });
-  return map_model_lights(all, centre, instances.size() == 1 ? instances[0].name : "the scene's models", warnings);
-}
-
-// A model file's camera as the scene places it.
-struct PlacedCamera {
-  Camera camera;
-  std::optional<double> near;
-};
-
-// The camera named `name` among the placed models' files, or ("" ) the
-// first perspective one; nullopt when there is none. A name that is not
-// there is an error of `option`.
-std::optional<PlacedCamera> file_camera(const std::vector<Instance>& instances, const std::string& name,
-                                        const std::string& option, std::vector<std::string>& warnings) {
-  std::vector<std::string> seen;
-  std::string passed_over;  // orthographic cameras, named in one warning
-  auto warn_passed_over = [&] {
-    if (!passed_over.empty())
-      warnings.push_back("orthographic cameras passed over (GIRTD projects in perspective only): " + passed_over);
-  };
-  for (const Instance& in : instances)
-    for (const ModelCamera& c : in.model->cameras) {
-      seen.push_back(c.name);
-      if (!name.empty() && c.name != name) continue;
-      if (c.orthographic) {
-        if (!name.empty()) throw InputError(option, 0, "camera \"" + name + "\" is orthographic: GIRTD projects in perspective only");
-        passed_over += (passed_over.empty() ? "" : ", ") + in.name + " \"" + c.name + "\"";
-        continue;
-      }
-      ModelCamera placed = c;
-      placed.eye = in.transform.apply(c.eye);
-      placed.forward = in.transform.turn(c.forward);
-      placed.up = in.transform.turn(c.up);
-      const std::optional<Camera> cam = map_model_camera(placed);
-      if (!cam) {
-        if (!name.empty()) throw InputError(option, 0, "camera \"" + name + "\" has no view direction");
-        continue;
-      }
-      warn_passed_over();
-      std::optional<double> near;
-      if (c.near > 0) {
-        // The scene's own range of focal_distance, so that a dump replays.
-        near = std::clamp(c.near, kMinFocalDistance, kMaxFocalDistance);
-        if (*near != c.near)
-          warnings.push_back(in.name + ": camera \"" + c.name + "\"'s near plane " + std::to_string(c.near) +
-                             " taken as " + std::to_string(*near) + " (the focal distance's range)");
-      }
-      return PlacedCamera{*cam, near};
-    }
-  warn_passed_over();
-  if (name.empty()) return std::nullopt;
-  std::string list;
-  for (const std::string& n : seen) list += (list.empty() ? "" : ", ") + ("\"" + n + "\"");
-  throw InputError(option, 0, "no camera named \"" + name + "\" in the model" +
-                                  (seen.empty() ? " (it has no cameras)" : " (its cameras: " + list + ")"));
-}
 
 class SceneReader {
  public:
