@@ -17,6 +17,12 @@ CameraVertex depth_crossing(const CameraVertex& p1, const CameraVertex& p2, doub
 
 std::vector<CameraVertex> depth_clip(const std::vector<CameraVertex>& poly, double c) {
   std::vector<CameraVertex> out;
+  depth_clip(poly, c, out);
+  return out;
+}
+
+void depth_clip(const std::vector<CameraVertex>& poly, double c, std::vector<CameraVertex>& out) {
+  out.clear();
   const size_t n = poly.size();
   for (size_t i = 0; i < n; ++i) {
     const CameraVertex& a = poly[i];
@@ -26,7 +32,6 @@ std::vector<CameraVertex> depth_clip(const std::vector<CameraVertex>& poly, doub
     if (a_in && !b_in) out.push_back(depth_crossing(a, b, c));
     if (!a_in && b_in) out.push_back(depth_crossing(b, a, c));
   }
-  return out;
 }
 
 }  // namespace girtd

@@ -18,5 +18,7 @@ CameraVertex depth_crossing(const CameraVertex& p1, const CameraVertex& p2, doub
 
 // The part of the polygon with Zs > C, in the same order (empty if none).
 std::vector<CameraVertex> depth_clip(const std::vector<CameraVertex>& poly, double c);
+// The same into `out` (cleared first, its storage reused; not `poly` itself).
+void depth_clip(const std::vector<CameraVertex>& poly, double c, std::vector<CameraVertex>& out);
 
 }  // namespace girtd

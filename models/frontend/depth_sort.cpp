@@ -1,7 +1,8 @@
 #include "frontend/depth_sort.hpp"
 
+#include <absl/container/flat_hash_map.h>
+
 #include <algorithm>
-#include <unordered_map>
 
 namespace girtd {
 namespace {
@@ -33,16 +34,19 @@ void DepthSorter::sort(std::vector<SortItem>& items) {
     ++comparisons_;
     return a.key > b.key;
   };
-  std::unordered_map<uint64_t, size_t> where;
-  for (size_t i = 0; i < items.size(); ++i) where[items[i].id] = i;
   std::vector<SortItem> ordered;
-  ordered.reserve(items.size());
   std::vector<bool> taken(items.size(), false);
-  for (uint64_t id : previous_) {
-    auto it = where.find(id);
-    if (it == where.end() || taken[it->second]) continue;
-    taken[it->second] = true;
-    ordered.push_back(items[it->second]);
+  if (!previous_.empty()) {  // the first frame has nothing to match
+    absl::flat_hash_map<uint64_t, size_t> where;
+    where.reserve(items.size());
+    for (size_t i = 0; i < items.size(); ++i) where[items[i].id] = i;
+    ordered.reserve(items.size());
+    for (uint64_t id : previous_) {
+      auto it = where.find(id);
+      if (it == where.end() || taken[it->second]) continue;
+      taken[it->second] = true;
+      ordered.push_back(items[it->second]);
+    }
   }
   // Less than half known from last frame: coherence does not pay, sort afresh.
   bool sorted = false;

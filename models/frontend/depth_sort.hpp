@@ -22,7 +22,7 @@ namespace girtd {
 struct SortItem {
   uint64_t id = 0;  // the same triangle has the same id in every frame
   double key = 0;   // larger = farther = earlier
-  int index = 0;    // the caller's payload (position in its list)
+  uint32_t index = 0;  // the caller's payload (position in its list)
 };
 
 // What the coherent pass may spend before it gives up: n ceil(log2 n) + n

@@ -2,34 +2,43 @@
 
 namespace girtd {
 
-std::vector<FrontTriangle> FrontEnd::run_frame(const WorldFrame& frame, const Window& window, double q) {
+std::vector<Triangle> FrontEnd::run_frame(const WorldFrame& frame, const Window& window, double q) {
   FrontEndStages& s = stages_;
   s.begin_frame(frame, window, q);
-  // Culling, lighting, view transform and depth clip, polygon by polygon;
-  // the depth extremes need the whole frame before anything is projected.
-  std::vector<FrontPolygon> clipped;
+  // A polygon's way through the stages, in storage reused for the next one.
+  FrontPolygon lit, clipped;
+  ScreenPolygon screen;
+  Triangulated made;
+  std::vector<Triangle> out;
+  std::vector<uint64_t> ids;
+  size_t expected = 0;  // a fan's n - 2 triangles per polygon
+  for (const WorldPolygon& p : frame.polygons) expected += p.p.size() > 2 ? p.p.size() - 2 : 0;
+  out.reserve(expected);
+  ids.reserve(expected);
+  // Projection needs the frame's depth range (every clipped polygon's depths)
+  // for Zp. The polygons go on with Zs as z, and each triangle's z becomes
+  // Zp once the range is known: window selection looks at x and y only, and
+  // the same Zs maps to the same Zp now as after a frame-long hold.
   for (const WorldObject& object : frame_objects(frame)) {
     if (!s.keep_object(object)) continue;
     for (size_t i = object.first; i < object.first + object.count; ++i) {
-      if (!s.keep_polygon(i)) continue;
-      std::optional<FrontPolygon> p = s.light(i);
-      if (!p) continue;
-      s.view(*p);
-      std::optional<FrontPolygon> kept = s.depth_clip(*p);
-      if (!kept) continue;
-      s.note_depths(*kept);
-      clipped.push_back(std::move(*kept));
+      if (!s.keep_polygon(i) || !s.light(i, lit)) continue;
+      s.view(lit);
+      if (!s.depth_clip(lit, clipped)) continue;
+      s.note_depths(clipped);
+      if (!s.project(clipped, screen)) continue;
+      s.triangulate(screen, made);
+      for (const SortableTriangle& t : made.triangles)
+        if (s.window_select(t)) {
+          out.push_back(t.ft.tri);
+          ids.push_back(t.id);
+        }
     }
   }
   const DepthMap depth = s.depth_map();
-  std::vector<SortableTriangle> selected;
-  for (const FrontPolygon& p : clipped) {
-    const std::optional<ScreenPolygon> sp = s.project(p, depth);
-    if (!sp) continue;
-    for (const SortableTriangle& t : s.triangulate(*sp).triangles)
-      if (s.window_select(t)) selected.push_back(t);
-  }
-  return s.sort(selected);
+  for (Triangle& t : out) FrontEndStages::map_depth(t, depth);
+  s.sort(out, ids);
+  return out;
 }
 
 }  // namespace girtd

@@ -19,8 +19,9 @@ class FrontEnd {
   // `depth_max`: P of the Zp map (config depth.max_mapped).
   FrontEnd(ScreenMap screen, double depth_max, FrontEndOptions options = {}) : stages_(screen, depth_max, options) {}
 
-  // `q`: the frame's AA width (object culling's margin).
-  std::vector<FrontTriangle> run_frame(const WorldFrame& frame, const Window& window, double q = 1.0);
+  // `q`: the frame's AA width (object culling's margin). The frame's
+  // triangles, farthest first, with their interior edges marked.
+  std::vector<Triangle> run_frame(const WorldFrame& frame, const Window& window, double q = 1.0);
   FrontendCounts counts() const { return stages_.counts(); }
 
  private:

@@ -23,11 +23,9 @@ bool is_back_face(const WorldPolygon& poly, const Vec3& eye) {
 }
 
 // The polygon in 2D coordinates of its own Newell plane (counter-clockwise
-// about the normal). `planar` reports whether it lies in that plane.
-std::vector<Point2> plane_coordinates(const std::vector<CameraVertex>& v, bool& planar) {
-  std::vector<Vec3> s;
-  for (const CameraVertex& c : v) s.push_back(c.s);
-  const Vec3 n = normalized(newell_normal(s));
+// about the normal), into `out`. `planar` reports whether it lies in that plane.
+void plane_coordinates(const std::vector<CameraVertex>& v, bool& planar, std::vector<Point2>& out) {
+  const Vec3 n = normalized(newell_sum(v.size(), [&](size_t i) -> const Vec3& { return v[i].s; }));
   // u: any unit vector in the plane, from the axis least aligned with n.
   const Vec3 axis = std::fabs(n.x) <= std::fabs(n.y) && std::fabs(n.x) <= std::fabs(n.z) ? Vec3{1, 0, 0}
                     : std::fabs(n.y) <= std::fabs(n.z)                                    ? Vec3{0, 1, 0}
@@ -35,18 +33,22 @@ std::vector<Point2> plane_coordinates(const std::vector<CameraVertex>& v, bool& 
   const Vec3 u = normalized(cross(n, axis));
   const Vec3 w = cross(n, u);
   Vec3 centroid;
-  for (const Vec3& p : s) centroid = centroid + p;
-  centroid = centroid * (1.0 / static_cast<double>(s.size()));
+  for (const CameraVertex& c : v) centroid = centroid + c.s;
+  centroid = centroid * (1.0 / static_cast<double>(v.size()));
   double radius = 0, off_plane = 0;
-  std::vector<Point2> out;
-  for (const Vec3& p : s) {
-    const Vec3 d = p - centroid;
+  out.clear();
+  for (const CameraVertex& c : v) {
+    const Vec3 d = c.s - centroid;
     radius = std::max(radius, length(d));
     off_plane = std::max(off_plane, std::fabs(dot(d, n)));
     out.push_back({dot(d, u), dot(d, w)});
   }
   planar = off_plane <= kNonPlanarTolerance * radius;
-  return out;
+}
+
+// The polygon's corners (camera space) have no area.
+bool no_area(const std::vector<CameraVertex>& v) {
+  return has_no_area(v.size(), [&](size_t i) -> const Vec3& { return v[i].s; });
 }
 
 }  // namespace
@@ -57,7 +59,7 @@ void FrontEndStages::begin_frame(const WorldFrame& frame, const Window& window, 
   depth_range_margin_px_ = culling_margin_px(q) - 0.5;
   if (options_.cull_objects || options_.prune_lighting_out_of_view)
     view_volume_ = ViewVolume(frame.camera, frame.focal_distance, screen_, window, culling_margin_px(q));
-  normals_.clear();  // made by the first light() of the frame (only the lighting stage needs them)
+  normals_ = {};  // made by the first light() of the frame (only the lighting stage needs them)
   zmin_ = std::numeric_limits<double>::infinity();
   zmax_ = -zmin_;
   created_any_ = false;
@@ -95,20 +97,20 @@ bool FrontEndStages::keep_polygon(size_t i) {
   return false;
 }
 
-std::optional<FrontPolygon> FrontEndStages::light(size_t i) {
+bool FrontEndStages::light(size_t i, FrontPolygon& out) {
   const WorldFrame& frame = *frame_;
   const WorldPolygon& poly = frame.polygons[i];
   if (has_no_area(poly.p)) {  // decided in world space; keep_polygon passed it on: no area has no facing
     ++counts_.degenerate_polygons;
-    return std::nullopt;
+    return false;
   }
   const Camera& cam = frame.camera;
-  FrontPolygon out;
   out.source = i;
+  out.v.clear();
   if (options_.prune_lighting_out_of_view && view_volume_.misses(poly.p)) {
     for (const Vec3& p : poly.p) out.v.push_back({p, 0, 0, 0, 1, false});  // its colours are never drawn
     ++counts_.unlit;
-    return out;
+    return true;
   }
   if (normals_.empty()) normals_ = vertex_normals(frame.polygons);
   const Surface& surface = frame.surfaces.at(static_cast<size_t>(poly.surface));
@@ -118,6 +120,12 @@ std::optional<FrontPolygon> FrontEndStages::light(size_t i) {
     const LitVertex lit = light_vertex(corner, frame.lights, normals_[i][k], normalized(cam.centre - poly.p[k]));
     out.v.push_back({poly.p[k], lit.r, lit.g, lit.b, lit.t, false});
   }
+  return true;
+}
+
+std::optional<FrontPolygon> FrontEndStages::light(size_t i) {
+  FrontPolygon out;
+  if (!light(i, out)) return std::nullopt;
   return out;
 }
 
@@ -125,14 +133,21 @@ void FrontEndStages::view(FrontPolygon& p) const {
   for (CameraVertex& v : p.v) v.s = to_camera_space(frame_->camera, v.s);
 }
 
-std::optional<FrontPolygon> FrontEndStages::depth_clip(const FrontPolygon& p) {
+bool FrontEndStages::depth_clip(const FrontPolygon& p, FrontPolygon& out) {
   const double c = frame_->focal_distance;
-  FrontPolygon out{p.source, girtd::depth_clip(p.v, c)};
+  out.source = p.source;
+  girtd::depth_clip(p.v, c, out.v);
   if (out.v.empty()) {
     ++counts_.clipped_away;
-    return std::nullopt;
+    return false;
   }
   if (std::any_of(p.v.begin(), p.v.end(), [&](const CameraVertex& v) { return v.s.z <= c; })) ++counts_.clipped;
+  return true;
+}
+
+std::optional<FrontPolygon> FrontEndStages::depth_clip(const FrontPolygon& p) {
+  FrontPolygon out;
+  if (!depth_clip(p, out)) return std::nullopt;
   return out;
 }
 
@@ -172,34 +187,43 @@ DepthMap FrontEndStages::depth_map() const {
   return DepthMap(zmin, zmax, depth_max_);
 }
 
-std::optional<ScreenPolygon> FrontEndStages::project(const FrontPolygon& p, const DepthMap& depth) {
+bool FrontEndStages::project(const FrontPolygon& p, ScreenPolygon& out) {
   // The clip may make a corner twice (a vertex on Zs = C) or a sliver with
   // no area left: the same tests as for the input.
-  ScreenPolygon out{p.source, p.v, {}};
+  out.source = p.source;
+  out.v = p.v;
   drop_repeated_corners(out.v, [](const CameraVertex& a, const CameraVertex& b) {
     return a.s.x == b.s.x && a.s.y == b.s.y && a.s.z == b.s.z;
   });
-  std::vector<Vec3> s;
-  for (const CameraVertex& x : out.v) s.push_back(x.s);
-  if (has_no_area(s)) {
+  if (no_area(out.v)) {
     ++counts_.degenerate_polygons;
-    return std::nullopt;
+    return false;
   }
+  out.screen.clear();
   for (const CameraVertex& x : out.v) {
     const PlanePoint pp = girtd::project(x.s, frame_->camera.d_over_s);
-    out.screen.push_back({screen_.x(pp.xp), screen_.y(pp.yp), depth.zp(x.s.z), x.r, x.g, x.b, x.t});
+    out.screen.push_back({screen_.x(pp.xp), screen_.y(pp.yp), x.s.z, x.r, x.g, x.b, x.t});
   }
+  return true;
+}
+
+std::optional<ScreenPolygon> FrontEndStages::project(const FrontPolygon& p, const DepthMap& depth) {
+  ScreenPolygon out;
+  if (!project(p, out)) return std::nullopt;
+  for (Vertex& v : out.screen) v.z = depth.zp(v.z);
   return out;
 }
 
-Triangulated FrontEndStages::triangulate(const ScreenPolygon& p) {
+void FrontEndStages::triangulate(const ScreenPolygon& p, Triangulated& out) {
   bool planar = true;
-  const Triangulation tr = girtd::triangulate(plane_coordinates(p.v, planar));
+  plane_coordinates(p.v, planar, plane_);
+  girtd::triangulate(plane_, triangulation_);
+  const Triangulation& tr = triangulation_;
   if (!planar && p.v.size() > 3) ++counts_.non_planar;
   if (tr.concave_vertices > 0) ++counts_.concave;
   if (tr.method == TriangulationMethod::kEarClipping) ++counts_.ear_clipped;
   if (tr.method == TriangulationMethod::kFallbackFan) ++counts_.triangulation_fallbacks;
-  Triangulated out;
+  out.triangles.clear();
   out.method = tr.method;
   out.corners = p.v.size();
   for (size_t k = 0; k < tr.triangles.size(); ++k) {
@@ -216,6 +240,11 @@ Triangulated FrontEndStages::triangulate(const ScreenPolygon& p) {
     }
     out.triangles.push_back(st);
   }
+}
+
+Triangulated FrontEndStages::triangulate(const ScreenPolygon& p) {
+  Triangulated out;
+  triangulate(p, out);
   return out;
 }
 
@@ -232,21 +261,34 @@ bool FrontEndStages::window_select(const SortableTriangle& t) {
   return true;
 }
 
-std::vector<FrontTriangle> FrontEndStages::sort(const std::vector<SortableTriangle>& frame_triangles) {
+void FrontEndStages::sort(std::vector<Triangle>& triangles, const std::vector<uint64_t>& ids) {
   std::vector<SortItem> order;
-  order.reserve(frame_triangles.size());
-  for (size_t i = 0; i < frame_triangles.size(); ++i) {
-    const Triangle& t = frame_triangles[i].ft.tri;
-    const double key = std::max({t.v[0].z, t.v[1].z, t.v[2].z});
-    order.push_back({frame_triangles[i].id, key, static_cast<int>(i)});
+  order.reserve(triangles.size());
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    const Triangle& t = triangles[i];
+    order.push_back({ids[i], std::max({t.v[0].z, t.v[1].z, t.v[2].z}), static_cast<uint32_t>(i)});
   }
   sorter_.sort(order);
-  std::vector<FrontTriangle> sorted;
-  sorted.reserve(order.size());
-  for (const SortItem& s : order) sorted.push_back(frame_triangles[static_cast<size_t>(s.index)].ft);
-  mark_interior_edges(sorted);
-  counts_.triangles_out += sorted.size();
-  return sorted;
+  // Triangle k of the sorted frame is triangles[order[k].index]: each cycle
+  // of that permutation is walked once, so no second frame is held.
+  std::vector<bool> placed(triangles.size(), false);
+  for (size_t k = 0; k < triangles.size(); ++k) {
+    if (placed[k]) continue;
+    const Triangle first = triangles[k];
+    size_t at = k;
+    while (true) {
+      placed[at] = true;
+      const size_t from = order[at].index;
+      if (from == k) {
+        triangles[at] = first;
+        break;
+      }
+      triangles[at] = triangles[from];
+      at = from;
+    }
+  }
+  mark_interior_edges(triangles);
+  counts_.triangles_out += triangles.size();
 }
 
 FrontendCounts FrontEndStages::counts() const {

@@ -19,6 +19,7 @@
 #include "frontend/object_culling.hpp"
 #include "frontend/projection.hpp"
 #include "frontend/triangulator.hpp"
+#include "frontend/vertex_normals.hpp"
 #include "frontend/world_frame.hpp"
 
 namespace girtd {
@@ -94,22 +95,37 @@ class FrontEndStages {
   bool back_face_test_on() const { return frame_->cull_back_faces || options_.cull_back_faces_always; }
   bool keep_polygon(size_t polygon);
 
+  // Each stage comes twice: into a caller's object, whose storage is reused
+  // (FrontEnd::run_frame's loop allocates nothing per polygon), and as a
+  // value (the timed pipeline's items). false / nullopt: dropped.
   // Lighting, with the no-area test before it.
+  bool light(size_t polygon, FrontPolygon& out);
   std::optional<FrontPolygon> light(size_t polygon);
   void view(FrontPolygon& p) const;
-  // Keeps Zs > C; nullopt when nothing is left.
+  // Keeps Zs > C; false when nothing is left.
+  bool depth_clip(const FrontPolygon& p, FrontPolygon& out);
   std::optional<FrontPolygon> depth_clip(const FrontPolygon& p);
   // Projection's frame-long hold: the depths of every clipped polygon whose
   // screen box meets the window (widened by the fringe), then the map.
   void note_depths(const FrontPolygon& p);
   DepthMap depth_map() const;
   // Repeated corners and no-area slivers the clip made are dropped here.
+  // Without a depth map the screen vertices keep Zs as z, for map_depth once
+  // the frame's range is known (the same Zs in, the same Zp out).
+  bool project(const FrontPolygon& p, ScreenPolygon& out);
   std::optional<ScreenPolygon> project(const FrontPolygon& p, const DepthMap& depth);
+  static void map_depth(Triangle& t, const DepthMap& depth) {
+    for (Vertex& v : t.v) v.z = depth.zp(v.z);
+  }
+  void triangulate(const ScreenPolygon& p, Triangulated& out);
   Triangulated triangulate(const ScreenPolygon& p);
   // Selection and window clip (§3): false = no screen area or no start point.
+  // Decided by x and y alone: z may still be Zs.
   bool window_select(const SortableTriangle& t);
-  // Depth sort (farthest first), coherent across frames.
-  std::vector<FrontTriangle> sort(const std::vector<SortableTriangle>& frame_triangles);
+  // Depth sort (farthest first), coherent across frames: `triangles` in
+  // place (ids[i] is triangles[i]'s SortableTriangle::id), then their
+  // interior edges marked.
+  void sort(std::vector<Triangle>& triangles, const std::vector<uint64_t>& ids);
 
   FrontendCounts counts() const;
 
@@ -121,11 +137,14 @@ class FrontEndStages {
   ViewVolume view_volume_;
   double depth_range_margin_px_ = 0;
   Window window_{};
-  std::vector<std::vector<Vec3>> normals_;
+  VertexNormals normals_;
   double zmin_ = 0, zmax_ = 0;
   bool created_any_ = false;
   FrontendCounts counts_;
   DepthSorter sorter_;
+  // Scratch reused polygon after polygon.
+  std::vector<Point2> plane_;
+  Triangulation triangulation_;
 };
 
 }  // namespace girtd

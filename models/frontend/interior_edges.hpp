@@ -10,11 +10,11 @@
 
 #include <vector>
 
-#include "frontend/front_end_stages.hpp"
+#include "common/types.hpp"
 
 namespace girtd {
 
 // Sets Triangle::interior_edges of every triangle of the frame.
-void mark_interior_edges(std::vector<FrontTriangle>& frame);
+void mark_interior_edges(std::vector<Triangle>& frame);
 
 }  // namespace girtd

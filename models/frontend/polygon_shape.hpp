@@ -30,18 +30,27 @@ void drop_repeated_corners(std::vector<T>& corners, Same same) {
 
 // Twice the vector area (the Newell normal), summed as a fan from the first
 // corner so that rounding does not grow with the distance from the origin.
+// `at(i)` is corner i of n.
+template <typename At>
+Vec3 twice_vector_area(size_t n, At at) {
+  Vec3 v;
+  for (size_t i = 1; i + 1 < n; ++i) v = v + cross(at(i) - at(0), at(i + 1) - at(0));
+  return v;
+}
 inline Vec3 twice_vector_area(const std::vector<Vec3>& p) {
-  Vec3 n;
-  for (size_t i = 1; i + 1 < p.size(); ++i) n = n + cross(p[i] - p[0], p[i + 1] - p[0]);
-  return n;
+  return twice_vector_area(p.size(), [&](size_t i) -> const Vec3& { return p[i]; });
 }
 
 // Fewer than 3 corners, or no area by kZeroAreaTolerance.
-inline bool has_no_area(const std::vector<Vec3>& p) {
-  if (p.size() < 3) return true;
+template <typename At>
+bool has_no_area(size_t n, At at) {
+  if (n < 3) return true;
   double perimeter = 0;
-  for (size_t i = 0; i < p.size(); ++i) perimeter += length(p[(i + 1) % p.size()] - p[i]);
-  return length(twice_vector_area(p)) <= kZeroAreaTolerance * perimeter * perimeter;
+  for (size_t i = 0; i < n; ++i) perimeter += length(at((i + 1) % n) - at(i));
+  return length(twice_vector_area(n, at)) <= kZeroAreaTolerance * perimeter * perimeter;
+}
+inline bool has_no_area(const std::vector<Vec3>& p) {
+  return has_no_area(p.size(), [&](size_t i) -> const Vec3& { return p[i]; });
 }
 
 }  // namespace girtd

@@ -1,7 +1,8 @@
 #include "frontend/surface_groups.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <map>
+#include <cstdint>
 #include <numeric>
 #include <utility>
 
@@ -18,34 +19,45 @@ SurfaceGroups surface_groups(const Mesh& mesh, double crease_deg, bool split_mat
     return a;
   };
   std::vector<Vec3> normal(n);
-  for (size_t i = 0; i < n; ++i) {
-    std::vector<Vec3> p;
-    for (int k : mesh.polygons[i]) p.push_back(mesh.positions[static_cast<size_t>(k)]);
-    normal[i] = normalized(newell_normal(p));
-  }
-  // Allow rounding: a crease of exactly 90 deg joins 90-deg neighbours.
-  const double min_cos = std::cos(crease_deg * M_PI / 180.0) - 1e-9;
-  std::map<std::pair<int, int>, size_t> edge_owner;  // undirected edge -> first polygon seen on it
+  for (size_t i = 0; i < n; ++i)
+    normal[i] = normalized(newell_normal(mesh.positions, mesh.polygons[i].data(), mesh.polygons[i].size()));
+  // Every polygon edge as (undirected edge, polygon), sorted: the polygons on
+  // one edge follow each other, the first of them (its owner) leading.
+  struct EdgeUse {
+    uint64_t edge;
+    uint64_t polygon;
+    bool operator<(const EdgeUse& o) const { return edge != o.edge ? edge < o.edge : polygon < o.polygon; }
+  };
+  std::vector<EdgeUse> uses;
   for (size_t i = 0; i < n; ++i) {
     const std::vector<int>& poly = mesh.polygons[i];
     for (size_t k = 0; k < poly.size(); ++k) {
-      int a = poly[k], b = poly[(k + 1) % poly.size()];
-      if (a > b) std::swap(a, b);
-      auto [it, fresh] = edge_owner.emplace(std::make_pair(a, b), i);
-      if (fresh) continue;
-      const size_t j = it->second;
+      const uint32_t a = uint32_t(poly[k]), b = uint32_t(poly[(k + 1) % poly.size()]);
+      uses.push_back({uint64_t(std::min(a, b)) << 32 | std::max(a, b), i});
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+  // Allow rounding: a crease of exactly 90 deg joins 90-deg neighbours.
+  const double min_cos = std::cos(crease_deg * M_PI / 180.0) - 1e-9;
+  for (size_t at = 0; at < uses.size();) {
+    const size_t j = uses[at].polygon;  // the edge's owner
+    size_t next = at + 1;
+    for (; next < uses.size() && uses[next].edge == uses[at].edge; ++next) {
+      const size_t i = uses[next].polygon;
       // Two materials are two surfaces, however smooth the edge between them.
       const bool same_material = !split_materials || mesh.material.empty() || mesh.material[i] == mesh.material[j];
       if (same_material && dot(normal[i], normal[j]) >= min_cos) parent[find(i)] = find(j);
     }
+    at = next;
   }
+  // Numbered in order of first use: the numbering depends on the sets alone.
   SurfaceGroups g;
   g.group.assign(n, -1);
-  std::map<size_t, int> id_of_root;
+  std::vector<int> id_of_root(n, -1);
   for (size_t i = 0; i < n; ++i) {
-    auto [it, fresh] = id_of_root.emplace(find(i), g.count);
-    if (fresh) ++g.count;
-    g.group[i] = it->second;
+    int& id = id_of_root[find(i)];
+    if (id < 0) id = g.count++;
+    g.group[i] = id;
   }
   return g;
 }

@@ -77,8 +77,16 @@ bool ear_clip(const std::vector<Point2>& p, double o, std::vector<TriangleIndice
 
 Triangulation triangulate(const std::vector<Point2>& p) {
   Triangulation t;
+  triangulate(p, t);
+  return t;
+}
+
+void triangulate(const std::vector<Point2>& p, Triangulation& t) {
+  t.triangles.clear();
+  t.method = TriangulationMethod::kConvexFan;
+  t.concave_vertices = 0;
   const int n = static_cast<int>(p.size());
-  if (n < 3) return t;
+  if (n < 3) return;
   double area2 = 0;
   for (int i = 0; i < n; ++i) area2 += p[i].x * p[(i + 1) % n].y - p[(i + 1) % n].x * p[i].y;
   const double o = area2 >= 0 ? 1.0 : -1.0;
@@ -107,7 +115,6 @@ Triangulation triangulate(const std::vector<Point2>& p) {
       const int d = std::abs(a - b);
       tri.made_edge[e] = !(d == 1 || d == n - 1);
     }
-  return t;
 }
 
 }  // namespace girtd

@@ -41,5 +41,7 @@ struct Triangulation {
 // `p` needs at least 3 points. A self-intersecting polygon, where ear
 // clipping finds no ear, is fanned from vertex 0 (method kFallbackFan).
 Triangulation triangulate(const std::vector<Point2>& p);
+// The same into `out`, whose storage is reused (a front end's per-polygon loop).
+void triangulate(const std::vector<Point2>& p, Triangulation& out);
 
 }  // namespace girtd

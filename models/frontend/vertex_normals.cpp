@@ -1,47 +1,45 @@
 #include "frontend/vertex_normals.hpp"
 
-#include <map>
 #include <tuple>
 
+#include "common/equal_keys.hpp"
 #include "frontend/polygon_shape.hpp"
 
 namespace girtd {
 
 Vec3 newell_normal(const std::vector<Vec3>& p) {
-  Vec3 n;
-  for (size_t i = 0; i < p.size(); ++i) {
-    const Vec3& a = p[i];
-    const Vec3& b = p[(i + 1) % p.size()];
-    n.x += (a.y - b.y) * (a.z + b.z);
-    n.y += (a.z - b.z) * (a.x + b.x);
-    n.z += (a.x - b.x) * (a.y + b.y);
-  }
-  return n;
+  return newell_sum(p.size(), [&](size_t i) -> const Vec3& { return p[i]; });
 }
 
-std::vector<std::vector<Vec3>> vertex_normals(const std::vector<WorldPolygon>& polygons) {
-  using Key = std::tuple<int, double, double, double>;
-  std::map<Key, Vec3> sum;
+Vec3 newell_normal(const std::vector<Vec3>& positions, const int* index, size_t n) {
+  return newell_sum(n, [&](size_t i) -> const Vec3& { return positions[size_t(index[i])]; });
+}
+
+VertexNormals vertex_normals(const std::vector<WorldPolygon>& polygons) {
+  std::vector<size_t> first(polygons.size());
   std::vector<Vec3> face(polygons.size());
+  std::vector<uint32_t> polygon_of;  // per corner
   for (size_t i = 0; i < polygons.size(); ++i) {
     const WorldPolygon& poly = polygons[i];
+    first[i] = polygon_of.size();
     face[i] = has_no_area(poly.p) ? Vec3{} : normalized(newell_normal(poly.p));  // no area: no direction
-    for (const Vec3& v : poly.p) {
-      Vec3& s = sum[Key{poly.surface, v.x, v.y, v.z}];
-      s = s + face[i];
-    }
+    polygon_of.insert(polygon_of.end(), poly.p.size(), uint32_t(i));
   }
-  std::vector<std::vector<Vec3>> out(polygons.size());
-  for (size_t i = 0; i < polygons.size(); ++i) {
-    const WorldPolygon& poly = polygons[i];
-    out[i].reserve(poly.p.size());
-    for (const Vec3& v : poly.p) {
-      const Vec3 avg = normalized(sum[Key{poly.surface, v.x, v.y, v.z}]);
-      // Opposite faces of a sheet cancel: fall back to the polygon's own normal.
-      out[i].push_back(length(avg) > 0 ? avg : face[i]);
-    }
-  }
-  return out;
+  std::vector<Vec3> normal(polygon_of.size());
+  const auto key_of = [&](size_t c) {
+    const WorldPolygon& poly = polygons[polygon_of[c]];
+    const Vec3& v = poly.p[c - first[polygon_of[c]]];
+    return std::make_tuple(poly.surface, same_zero(v.x), same_zero(v.y), same_zero(v.z));
+  };
+  // The corners of one vertex come in polygon order: the sum adds in that order.
+  for_each_equal_key(polygon_of.size(), key_of, [&](const uint32_t* corner, size_t n) {
+    Vec3 sum;
+    for (size_t k = 0; k < n; ++k) sum = sum + face[polygon_of[corner[k]]];
+    const Vec3 avg = normalized(sum);
+    // Opposite faces of a sheet cancel: each corner falls back to its polygon's own normal.
+    for (size_t k = 0; k < n; ++k) normal[corner[k]] = length(avg) > 0 ? avg : face[polygon_of[corner[k]]];
+  });
+  return VertexNormals(std::move(first), std::move(normal));
 }
 
 }  // namespace girtd

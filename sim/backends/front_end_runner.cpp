@@ -29,7 +29,7 @@ FrontEndRun run_front_end(const Trace& polygons, const Params& params, const Pru
   for (const TraceFrame& in : polygons.frames) {
     TraceFrame out;
     out.settings = in.settings;
-    for (const FrontTriangle& t : fe.run_frame(in.world, in.settings.window, in.settings.q)) out.triangles.push_back(t.tri);
+    out.triangles = fe.run_frame(in.world, in.settings.window, in.settings.q);
     run.triangles.frames.push_back(std::move(out));
   }
   run.counts = fe.counts();

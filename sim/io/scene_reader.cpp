@@ -451,21 +451,23 @@ Trace read_scene_document(const nlohmann::json& document, const std::string& nam
 
 Trace scene_from_model(const std::string& path, const Params& params, const std::string& camera) {
   std::vector<std::string> warnings;
-  Instance in;
+  std::vector<Instance> one(1);
+  Instance& in = one[0];
   in.name = path;
   in.model = std::make_shared<const ImportedModel>(import_model(path, warnings));
   in.groups = surface_groups(in.mesh(), kDefaultCreaseDeg);
   choose_surfaces(in, std::nullopt);
   TraceFrame tf;
-  const std::optional<LightSet> lights = file_lights({in}, warnings);
+  const std::optional<LightSet> lights = file_lights(one, warnings);
   tf.world.lights = lights ? *lights : default_lights();
-  place({in}, tf.world);
-  if (const std::optional<PlacedCamera> c = file_camera({in}, camera, "--camera", warnings)) {
+  place(one, tf.world);
+  if (const std::optional<PlacedCamera> c = file_camera(one, camera, "--camera", warnings)) {
     tf.world.camera = c->camera;
     tf.world.focal_distance = c->near ? *c->near : SceneDefaults::kFocalDistance;
   } else {
     auto_frame(tf.world, SceneDefaults::kFovDeg, std::nullopt);
   }
+  one.clear();  // the mesh is placed: its memory goes before the front end's
   Trace trace;
   trace.path = path;
   trace.level = TraceLevel::kPolygon;

@@ -117,10 +117,18 @@ void PipelineElaboration::build_from_polygons(const Trace& polygons) {
       },
       [this, &sorter](size_t, Work<Triangle>& w) {
         const uint64_t before = sorter.counts().depth_sort_comparisons;
-        const std::vector<FrontTriangle> sorted = sorter.sort(to_sort_);
+        std::vector<Triangle> sorted;
+        std::vector<uint64_t> ids;
+        sorted.reserve(to_sort_.size());
+        ids.reserve(to_sort_.size());
+        for (const SortableTriangle& t : to_sort_) {
+          sorted.push_back(t.ft.tri);
+          ids.push_back(t.id);
+        }
+        sorter.sort(sorted, ids);
         w.push_back({depth_sort_ops(to_sort_.size(), sorter.counts().depth_sort_comparisons - before).flops(),
                      std::nullopt});
-        for (const FrontTriangle& t : sorted) w.push_back({0, t.tri});
+        for (const Triangle& t : sorted) w.push_back({0, t});
         to_sort_.clear();
       });
   build_back(preparer(sort_out));

@@ -173,10 +173,7 @@ std::vector<StressCase> order() {
 // Triangles of one transparent surface sharing edges, edge flags set as
 // the front end sets them.
 std::vector<Triangle> flagged(std::vector<Triangle> tris) {
-  std::vector<FrontTriangle> ft;
-  for (const Triangle& t : tris) ft.push_back({t, {}});
-  mark_interior_edges(ft);
-  for (size_t i = 0; i < tris.size(); ++i) tris[i] = ft[i].tri;
+  mark_interior_edges(tris);
   return tris;
 }
 

@@ -90,18 +90,18 @@ TEST_CASE("front end: object culling removes what cannot be drawn and changes no
   FrontEndOptions on;
   on.cull_objects = true;
   FrontEnd culled(ScreenMap{1024, 1024}, 65534, on);
-  const std::vector<FrontTriangle> a = plain.run_frame(f, Window{}), b = culled.run_frame(f, Window{});
+  const std::vector<Triangle> a = plain.run_frame(f, Window{}), b = culled.run_frame(f, Window{});
   REQUIRE(a.size() == 4);
   REQUIRE(b.size() == a.size());
   for (size_t i = 0; i < a.size(); ++i)
     for (int k = 0; k < 3; ++k) {  // the same depth range, so the same Zp
-      CHECK(a[i].tri.v[k].x == b[i].tri.v[k].x);
-      CHECK(a[i].tri.v[k].z == b[i].tri.v[k].z);
+      CHECK(a[i].v[k].x == b[i].v[k].x);
+      CHECK(a[i].v[k].z == b[i].v[k].z);
     }
   // Zmin = 5, Zmax = 8 (object 0 alone): the nearer square's corners map to 0,
   // the farther's to P.
-  CHECK(std::min({a[0].tri.v[0].z, a[3].tri.v[0].z}) == 0);
-  CHECK(std::max({a[0].tri.v[0].z, a[3].tri.v[0].z}) == Approx(65534));
+  CHECK(std::min({a[0].v[0].z, a[3].v[0].z}) == 0);
+  CHECK(std::max({a[0].v[0].z, a[3].v[0].z}) == Approx(65534));
   const FrontendCounts c = culled.counts();
   CHECK(c.polygons == 5);
   CHECK(c.objects == 3);
@@ -153,9 +153,9 @@ TEST_CASE("front end: pruning skips the lighting of polygons out of view, nothin
   CHECK(full.light(1)->v[0].r == Approx(100));
   // And the front end's triangles and counts are the same either way.
   FrontEnd a(ScreenMap{1024, 1024}, 65534, prune), b(ScreenMap{1024, 1024}, 65534);
-  const std::vector<FrontTriangle> ta = a.run_frame(f, Window{}), tb = b.run_frame(f, Window{});
+  const std::vector<Triangle> ta = a.run_frame(f, Window{}), tb = b.run_frame(f, Window{});
   REQUIRE(ta.size() == tb.size());
-  for (size_t i = 0; i < ta.size(); ++i) CHECK(ta[i].tri.v[1].r == tb[i].tri.v[1].r);
+  for (size_t i = 0; i < ta.size(); ++i) CHECK(ta[i].v[1].r == tb[i].v[1].r);
   CHECK(a.counts().discarded_off_window == b.counts().discarded_off_window);
   CHECK(a.counts().clipped_away == b.counts().clipped_away);
 }

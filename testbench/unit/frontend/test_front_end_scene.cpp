@@ -115,7 +115,7 @@ TEST_CASE("end to end: lit sphere and cube, eight pixels within 2 LSB", "[fronte
   trace.path = "sphere_and_cube";
   TraceFrame frame;
   frame.settings.q = 0;  // no fringe: the pixels sampled are interior anyway
-  for (const FrontTriangle& t : fe.run_frame(scene(), frame.settings.window)) frame.triangles.push_back(t.tri);
+  frame.triangles = fe.run_frame(scene(), frame.settings.window);
   trace.frames.push_back(frame);
   const RenderOutput out = render_trace(backend_named("golden"), trace, params, RenderOptions{});
 
@@ -197,21 +197,37 @@ TEST_CASE("front end: depth clip through the near plane, non-planar polygon", "[
   // The clip made vertices at Zs = C = Zmin: they map to Zp = 0; the floor's far edge
   // (Zs = 20) is the frame's Zmax -> 65534.
   double zmin = 1e9, zmax = -1;
-  for (const FrontTriangle& t : tris)
-    for (const Vertex& v : t.tri.v) zmin = std::min(zmin, v.z), zmax = std::max(zmax, v.z);
+  for (const Triangle& t : tris)
+    for (const Vertex& v : t.v) zmin = std::min(zmin, v.z), zmax = std::max(zmax, v.z);
   CHECK(zmin == 0);
   CHECK(zmax == Approx(65534));
   // made_edge: each quad's one diagonal, seen from both its triangles: 2 + 2.
   // The edge the clip made along Zs = C (both ends at Zp = 0) is a polygon
   // edge of the clipped floor: drawn in wire-frame, not made.
   CHECK(c.made_edges == 4);
-  int cut_edges = 0;
-  for (const FrontTriangle& t : tris)
-    for (int e = 0; e < 3; ++e)
-      if (t.tri.v[e].z == 0 && t.tri.v[(e + 1) % 3].z == 0) {
-        ++cut_edges;
-        CHECK_FALSE(t.made_edge[e]);
+  // The flags are the triangulator's output (run_frame hands on triangles
+  // alone): the stages one by one, as the timed pipeline runs them.
+  FrontEndStages st(ScreenMap{1024, 1024}, 65534);
+  st.begin_frame(f, Window{}, 1.0);
+  std::vector<FrontPolygon> held;
+  for (size_t i = 0; i < f.polygons.size(); ++i)
+    if (std::optional<FrontPolygon> lit = st.light(i)) {
+      st.view(*lit);
+      if (std::optional<FrontPolygon> kept = st.depth_clip(*lit)) {
+        st.note_depths(*kept);
+        held.push_back(*kept);
       }
+    }
+  const DepthMap depth = st.depth_map();
+  int cut_edges = 0;
+  for (const FrontPolygon& p : held)
+    if (std::optional<ScreenPolygon> sp = st.project(p, depth))
+      for (const SortableTriangle& t : st.triangulate(*sp).triangles)
+        for (int e = 0; e < 3; ++e)
+          if (t.ft.tri.v[e].z == 0 && t.ft.tri.v[(e + 1) % 3].z == 0) {
+            ++cut_edges;
+            CHECK_FALSE(t.ft.made_edge[e]);
+          }
   CHECK(cut_edges == 1);
 }
 
