@@ -9,6 +9,7 @@
 #                                 runs in it, and only while the main build is the one it was built against
 #   dda-cells DIR                 size the DDA by synthesis (DIR/synth.ys -> DIR/stat.txt)
 #   opaque-trace COUNT PATH       the speed bench's workload (tools/make_opaque_trace.py)
+#   mesh TRIANGLES PATH           a scale bench's UV sphere of about TRIANGLES triangles, once (tools/make_mesh.py)
 #   slurm-array SLICES SPEC OUT   run the sweep's rows as a job array first (studies/sweep_on_slurm.sh)
 #   plots DIR                     draw the command's plots after it ran (studies/COMMAND_plots.py)
 
@@ -137,6 +138,9 @@ prepare() {
       dda-cells) synthesise_dda "$a" ;;
       opaque-trace)
         mkdir -p "$(dirname "$b")" && "$PYTHON" "$ROOT/tools/make_opaque_trace.py" "$a" --out "$b" </dev/null ;;
+      mesh)
+        [[ -f "$b" ]] || { mkdir -p "$(dirname "$b")" && "$PYTHON" "$ROOT/tools/make_mesh.py" sphere --triangles "$a" \
+          -o "$b.part" </dev/null >/dev/null && mv "$b.part" "$b"; } ;;
       slurm-array) SLURM_ARRAY=("$a" "$b" "$c") ;;
       plots) PLOTS_DIR=$a ;;
       "") ;;

@@ -1,6 +1,7 @@
 #include "io/subprocess.hpp"
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -19,7 +20,10 @@ int run_process_logged(const std::vector<std::string>& args, const std::string& 
   return run_process_timed(args, log_path, 0);
 }
 
-int run_process_timed(const std::vector<std::string>& args, const std::string& log_path, double timeout_s) {
+namespace {
+
+// Starts `args` with its output appended to `log_path` ("" keeps ours); its pid, or -1.
+pid_t start(const std::vector<std::string>& args, const std::string& log_path, bool own_group) {
   std::vector<std::string> copy = args;
   std::vector<char*> argv;
   for (std::string& a : copy) argv.push_back(a.data());
@@ -27,19 +31,47 @@ int run_process_timed(const std::vector<std::string>& args, const std::string& l
   std::fflush(stdout);
   std::fflush(stderr);
   const pid_t pid = fork();
-  if (pid < 0) return -1;
-  if (pid == 0) {
-    if (timeout_s > 0) setpgid(0, 0);  // its own process group: a timeout kills what it started too
-    if (!log_path.empty()) {
-      const int log = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-      if (log >= 0) {
-        dup2(log, 1);
-        dup2(log, 2);
-      }
+  if (pid != 0) return pid;
+  if (own_group) setpgid(0, 0);  // a timeout kills what it started too
+  if (!log_path.empty()) {
+    const int log = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+    if (log >= 0) {
+      dup2(log, 1);
+      dup2(log, 2);
     }
-    execvp(argv[0], argv.data());
-    _exit(127);
   }
+  execvp(argv[0], argv.data());
+  _exit(127);
+}
+
+int exit_code(int status) {
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  const int sig = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  return sig == SIGINT || sig == SIGTERM || sig == SIGHUP ? kStopped : -1;
+}
+
+}  // namespace
+
+ProcessUsage run_process_measured(const std::vector<std::string>& args, const std::string& log_path) {
+  ProcessUsage u;
+  const auto t0 = std::chrono::steady_clock::now();
+  const pid_t pid = start(args, log_path, false);
+  if (pid < 0) return u;
+  int status = 0;
+  rusage r{};
+  pid_t done;
+  while ((done = wait4(pid, &status, 0, &r)) < 0 && errno == EINTR) {
+  }
+  u.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (done != pid) return u;
+  u.exit_code = exit_code(status);
+  u.peak_rss_mb = double(r.ru_maxrss) / 1024.0;  // KiB on Linux
+  return u;
+}
+
+int run_process_timed(const std::vector<std::string>& args, const std::string& log_path, double timeout_s) {
+  const pid_t pid = start(args, log_path, timeout_s > 0);
+  if (pid < 0) return -1;
   int status = 0;
   const auto start = std::chrono::steady_clock::now();
   for (;;) {
@@ -54,9 +86,7 @@ int run_process_timed(const std::vector<std::string>& args, const std::string& l
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  const int sig = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
-  return sig == SIGINT || sig == SIGTERM || sig == SIGHUP ? kStopped : -1;
+  return exit_code(status);
 }
 
 std::string self_executable() {

@@ -18,6 +18,16 @@ int run_process_logged(const std::vector<std::string>& argv, const std::string& 
 inline constexpr int kTimedOut = -2;
 int run_process_timed(const std::vector<std::string>& argv, const std::string& log_path, double timeout_s);
 
+// The same, timed: its exit code (as run_process's), its elapsed time and the
+// peak resident memory of its largest process (the kernel's ru_maxrss of the
+// child, which takes in its own reaped children).
+struct ProcessUsage {
+  int exit_code = -1;
+  double elapsed_s = 0;
+  double peak_rss_mb = 0;  // MiB
+};
+ProcessUsage run_process_measured(const std::vector<std::string>& argv, const std::string& log_path);
+
 // This program's own path (/proc/self/exe), to run a subcommand in a child
 // process: SystemC elaborates once per process.
 std::string self_executable();

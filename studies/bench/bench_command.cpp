@@ -24,6 +24,7 @@
 #include "bench/rtl_speed_bench.hpp"
 #include "bench/series_cost_bench.hpp"
 #include "bench/pipeline_bench.hpp"
+#include "bench/scale_bench.hpp"
 #include "io/image_compare.hpp"
 #include "io/workload_list.hpp"
 #include "common/input_error.hpp"
@@ -79,6 +80,17 @@ int run_bench(const BenchArgs& a) {
     const int failures = rb.failures + gb.failures + sb.failures;
     std::printf("%d failure(s); wrote %s\n", failures, files.path("speed.md").c_str());
     return failures ? 1 : 0;
+  }
+  if (a.scale_only) {
+    if (!config.empty()) throw InputError("--config", 0, "bench --scale renders with the default configuration");
+    const ScaleBench sb = run_scale_bench(out_dir, a.scale_sizes, a.scale_runs);
+    OutputSet files(out_dir);
+    files.add_text("scale.json", nlohmann::json{{"measured_on", measured_on()}, {"scale", sb.rows}}.dump(2) + "\n");
+    files.add_text("scale.md", "# girtd bench --scale\n" + sb.markdown);
+    files.commit();
+    std::fputs(sb.markdown.c_str(), stdout);
+    std::printf("%d failure(s); wrote %s\n", sb.failures, files.path("scale.md").c_str());
+    return sb.failures ? 1 : 0;
   }
   if (a.leave_out_only) {
     const LeaveOutBench lb = run_leave_out_bench(config, out_dir);

@@ -13,6 +13,9 @@ struct BenchArgs {
   ConfigFiles config;
   std::string out = "out/bench";
   bool pipeline_only = false, leave_out_only = false, speed_only = false;
+  bool scale_only = false;          // the simulator's cost against the input's size (scale_bench.hpp)
+  std::vector<long> scale_sizes;    // its meshes' triangle counts
+  int scale_runs = 3;
   bool bless = false;          // rewrite the stored expectations from this run (cli/expectations.hpp)
   bool option_matrix = false;  // the pipeline table under each memory-side option
   std::vector<std::string> inputs;  // the pipeline table's (default: the sample workloads)

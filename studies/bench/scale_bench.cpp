@@ -1,0 +1,194 @@
+#include "bench/scale_bench.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "bench/bench_stats.hpp"
+#include "io/json_file.hpp"
+#include "io/subprocess.hpp"
+
+namespace girtd {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The bars (docs: "Real sizes"): at the largest size golden within
+// these multiples of assimp's import, approx within kApproxOverGolden of
+// golden; the growth exponents at most kMaxExponent.
+constexpr double kGoldenOverAssimpTime = 3.0, kGoldenOverAssimpMemory = 2.0, kApproxOverGolden = 2.0;
+constexpr double kMaxExponent = 1.1;
+constexpr double kMargin = 0.9;  // "met" needs the median 10 % past the bar
+
+std::string mesh_path(const std::string& out_dir, long n) { return out_dir + "/scale/sphere_" + std::to_string(n) + ".obj"; }
+
+struct Sample {
+  std::vector<double> elapsed, peak, wall;
+};
+
+// Least-squares slope of log y against log x.
+double exponent(const std::vector<double>& x, const std::vector<double>& y) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double n = double(x.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    const double lx = std::log(x[i]), ly = std::log(y[i]);
+    sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
+  }
+  const double d = n * sxx - sx * sx;
+  return d > 0 ? (n * sxy - sx * sy) / d : 0;
+}
+
+const char* verdict(double ratio, double bar) {
+  return ratio <= kMargin * bar ? "met" : ratio <= bar ? "within the bar, not 10 % past it" : "not met";
+}
+
+std::string cell(const char* fmt, double v) {
+  char s[64];
+  std::snprintf(s, sizeof s, fmt, v);
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::string> scale_bench_plan_lines(const std::string& out_dir, const std::vector<long>& sizes) {
+  std::vector<std::string> lines;
+  for (long n : sizes) lines.push_back("mesh\t" + std::to_string(n) + "\t" + mesh_path(out_dir, n));
+  return lines;
+}
+
+ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& sizes, int runs) {
+  ScaleBench b;
+  const std::string dir = out_dir + "/scale";
+  fs::create_directories(dir);
+  const std::string self = self_executable();
+  const std::string yardstick = (fs::path(self).parent_path() / "girtd_assimp_import").string();
+  // As a user runs it: the driver (it checks the build is up to date first)
+  // when it started this bench, else this executable.
+  const char* driver = std::getenv("GIRTD_DRIVER");
+  const std::string render = driver && *driver ? driver : self;
+  auto fail = [&b](const std::string& what) {
+    std::fprintf(stderr, "bench: %s\n", what.c_str());
+    ++b.failures;
+    b.markdown += "\n" + what + "\n";
+  };
+  std::vector<double> tris, golden_t, golden_m, approx_t, approx_m, assimp_t, assimp_m;
+  double last_time_ratio = 0, last_memory_ratio = 0, last_approx_ratio = 0;
+  b.rows = nlohmann::json::array();
+  for (long n : sizes) {
+    const std::string mesh = mesh_path(out_dir, n);
+    if (!fs::exists(mesh)) {
+      fail("the mesh " + mesh + " is not there: tools/girtd bench --scale makes it first (tools/make_mesh.py)");
+      return b;
+    }
+    Sample assimp, golden, approx;
+    std::vector<double> time_ratio, memory_ratio, approx_ratio;
+    long triangles = 0;
+    const std::string log = dir + "/runs.log";
+    for (int r = 0; r < runs; ++r) {
+      std::fprintf(stderr, "\r[girtd] bench --scale: %ld triangles, run %d/%d   ", n, r + 1, runs);
+      const ProcessUsage a = run_process_measured({yardstick, mesh}, log);
+      double t[2], m[2];
+      bool ok = a.exit_code == 0;
+      for (int k = 0; k < 2 && ok; ++k) {
+        const std::string backend = k == 0 ? "golden" : "approx";
+        const std::string out = dir + "/" + backend + "_" + std::to_string(n);
+        const ProcessUsage u =
+            run_process_measured({render, "render", mesh, "--backend", backend, "--out", out, "--quiet"}, log);
+        ok = u.exit_code == 0;
+        if (!ok) break;
+        const nlohmann::json report = read_json_file(out + "/report.json");
+        triangles = report.at("frontend").at("polygons").get<long>();
+        Sample& s = k == 0 ? golden : approx;
+        s.elapsed.push_back(u.elapsed_s);
+        s.peak.push_back(u.peak_rss_mb);
+        s.wall.push_back(report.at("wall_s").get<double>());
+        t[k] = u.elapsed_s;
+        m[k] = u.peak_rss_mb;
+      }
+      if (!ok) {
+        fail("a run on " + mesh + " failed (" + log + ")");
+        return b;
+      }
+      assimp.elapsed.push_back(a.elapsed_s);
+      assimp.peak.push_back(a.peak_rss_mb);
+      time_ratio.push_back(t[0] / a.elapsed_s);
+      memory_ratio.push_back(m[0] / a.peak_rss_mb);
+      approx_ratio.push_back(t[1] / t[0]);
+    }
+    std::fprintf(stderr, "\n");
+    tris.push_back(double(triangles));
+    assimp_t.push_back(median(assimp.elapsed));
+    assimp_m.push_back(median(assimp.peak));
+    golden_t.push_back(median(golden.elapsed));
+    golden_m.push_back(median(golden.peak));
+    approx_t.push_back(median(approx.elapsed));
+    approx_m.push_back(median(approx.peak));
+    last_time_ratio = median(time_ratio);
+    last_memory_ratio = median(memory_ratio);
+    last_approx_ratio = median(approx_ratio);
+    b.rows.push_back({{"triangles", triangles},
+                      {"mesh_mb", double(fs::file_size(mesh)) / (1024.0 * 1024.0)},
+                      {"assimp", {{"elapsed_s", assimp_t.back()}, {"peak_mb", assimp_m.back()}}},
+                      {"golden",
+                       {{"elapsed_s", golden_t.back()}, {"peak_mb", golden_m.back()}, {"wall_s", median(golden.wall)}}},
+                      {"approx",
+                       {{"elapsed_s", approx_t.back()}, {"peak_mb", approx_m.back()}, {"wall_s", median(approx.wall)}}},
+                      {"golden_over_assimp_time", last_time_ratio},
+                      {"golden_over_assimp_memory", last_memory_ratio},
+                      {"approx_over_golden_time", last_approx_ratio}});
+  }
+  const nlohmann::json fits = {{"golden_time", exponent(tris, golden_t)}, {"golden_memory", exponent(tris, golden_m)},
+                               {"approx_time", exponent(tris, approx_t)}, {"approx_memory", exponent(tris, approx_m)},
+                               {"assimp_time", exponent(tris, assimp_t)}, {"assimp_memory", exponent(tris, assimp_m)}};
+  b.rows = {{"sizes", b.rows}, {"exponents", fits}, {"runs", runs}, {"timed", driver && *driver ? "tools/girtd render" : "girtd render"}};
+
+  std::string& md = b.markdown;
+  md += "\n## The simulator at scale: generated UV spheres, " + std::to_string(runs) + " runs each\n\n";
+  md += std::string("Each run, in turn: assimp's import alone (`girtd_assimp_import`: `ReadFile` with no post-processing), then `") +
+        (driver && *driver ? "tools/girtd render" : "girtd render") +
+        " FILE --backend golden`, then the same on approx, each in its own process. Elapsed: start to exit; peak: "
+        "the largest process's resident memory (the simulator or its import child). Medians over the runs; the "
+        "ratios are the medians of each run's ratio.\n\n";
+  md += "| triangles | OBJ MB | assimp s | assimp MB | golden s | golden MB | golden wall_s | golden us/triangle | approx s | "
+        "approx MB | approx wall_s | golden / assimp time | golden / assimp memory | approx / golden time |\n";
+  md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (size_t i = 0; i < tris.size(); ++i) {
+    const nlohmann::json& r = b.rows["sizes"][i];
+    md += "| " + std::to_string(long(tris[i])) + " | " + cell("%.1f", r["mesh_mb"].get<double>()) + " | " +
+          cell("%.2f", assimp_t[i]) + " | " + cell("%.0f", assimp_m[i]) + " | " + cell("%.2f", golden_t[i]) + " | " +
+          cell("%.0f", golden_m[i]) + " | " + cell("%.2f", r["golden"]["wall_s"].get<double>()) + " | " +
+          cell("%.2f", 1e6 * golden_t[i] / tris[i]) + " | " + cell("%.2f", approx_t[i]) + " | " +
+          cell("%.0f", approx_m[i]) + " | " + cell("%.2f", r["approx"]["wall_s"].get<double>()) + " | " +
+          cell("%.2f", r["golden_over_assimp_time"].get<double>()) + " | " +
+          cell("%.2f", r["golden_over_assimp_memory"].get<double>()) + " | " +
+          cell("%.2f", r["approx_over_golden_time"].get<double>()) + " |\n";
+  }
+  if (tris.size() >= 2) {
+    md += "\nGrowth exponents (least squares of log cost against log triangles over the sizes): golden time " +
+          cell("%.2f", fits["golden_time"].get<double>()) + ", memory " + cell("%.2f", fits["golden_memory"].get<double>()) +
+          "; approx time " + cell("%.2f", fits["approx_time"].get<double>()) + ", memory " +
+          cell("%.2f", fits["approx_memory"].get<double>()) + "; assimp time " +
+          cell("%.2f", fits["assimp_time"].get<double>()) + ", memory " + cell("%.2f", fits["assimp_memory"].get<double>()) +
+          ".\n";
+  }
+  if (!tris.empty()) {
+    const double worst = std::max({fits["golden_time"].get<double>(), fits["golden_memory"].get<double>(),
+                                   fits["approx_time"].get<double>(), fits["approx_memory"].get<double>()});
+    md += "\nAt " + std::to_string(long(tris.back())) + " triangles, against the bars (met: the median at least 10 % past the bar):\n\n";
+    md += "| bar | measured | verdict |\n|---|---|---|\n";
+    md += "| golden time at most " + cell("%.0f", kGoldenOverAssimpTime) + "x assimp's | " + cell("%.2fx", last_time_ratio) +
+          " | " + verdict(last_time_ratio, kGoldenOverAssimpTime) + " |\n";
+    md += "| golden peak memory at most " + cell("%.0f", kGoldenOverAssimpMemory) + "x assimp's | " +
+          cell("%.2fx", last_memory_ratio) + " | " + verdict(last_memory_ratio, kGoldenOverAssimpMemory) + " |\n";
+    md += "| approx time at most " + cell("%.0f", kApproxOverGolden) + "x golden's | " + cell("%.2fx", last_approx_ratio) +
+          " | " + verdict(last_approx_ratio, kApproxOverGolden) + " |\n";
+    if (tris.size() >= 2)
+      md += "| growth exponents at most " + cell("%.1f", kMaxExponent) + " | " + cell("%.2f", worst) + " (the largest) | " +
+            (worst <= kMaxExponent ? "met" : "not met") + " |\n";
+  }
+  return b;
+}
+
+}  // namespace girtd
