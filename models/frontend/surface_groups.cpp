@@ -3,15 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <numeric>
 #include <utility>
 
+#include "common/parallel.hpp"
 #include "frontend/vertex_normals.hpp"
 
 namespace girtd {
 
 SurfaceGroups surface_groups(const Mesh& mesh, double crease_deg, bool split_materials) {
-  const size_t n = mesh.polygons.size();
+  const size_t n = mesh.polygon_count();
   std::vector<size_t> parent(n);
   std::iota(parent.begin(), parent.end(), size_t{0});
   auto find = [&](size_t a) {
@@ -19,8 +21,10 @@ SurfaceGroups surface_groups(const Mesh& mesh, double crease_deg, bool split_mat
     return a;
   };
   std::vector<Vec3> normal(n);
-  for (size_t i = 0; i < n; ++i)
-    normal[i] = normalized(newell_normal(mesh.positions, mesh.polygons[i].data(), mesh.polygons[i].size()));
+  parallel_for_each_index(n, [&](size_t i) {
+    const CornerSpan poly = mesh.polygon(i);
+    normal[i] = normalized(newell_normal(mesh.positions, poly.data, poly.size));
+  });
   // Every polygon edge as (undirected edge, polygon), sorted: the polygons on
   // one edge follow each other, the first of them (its owner) leading.
   struct EdgeUse {
@@ -29,14 +33,15 @@ SurfaceGroups surface_groups(const Mesh& mesh, double crease_deg, bool split_mat
     bool operator<(const EdgeUse& o) const { return edge != o.edge ? edge < o.edge : polygon < o.polygon; }
   };
   std::vector<EdgeUse> uses;
+  uses.reserve(mesh.corners.size());
   for (size_t i = 0; i < n; ++i) {
-    const std::vector<int>& poly = mesh.polygons[i];
-    for (size_t k = 0; k < poly.size(); ++k) {
-      const uint32_t a = uint32_t(poly[k]), b = uint32_t(poly[(k + 1) % poly.size()]);
+    const CornerSpan poly = mesh.polygon(i);
+    for (size_t k = 0; k < poly.size; ++k) {
+      const uint32_t a = uint32_t(poly[k]), b = uint32_t(poly[(k + 1) % poly.size]);
       uses.push_back({uint64_t(std::min(a, b)) << 32 | std::max(a, b), i});
     }
   }
-  std::sort(uses.begin(), uses.end());
+  parallel_sort_total(uses.begin(), uses.end(), std::less<EdgeUse>());
   // Allow rounding: a crease of exactly 90 deg joins 90-deg neighbours.
   const double min_cos = std::cos(crease_deg * M_PI / 180.0) - 1e-9;
   for (size_t at = 0; at < uses.size();) {

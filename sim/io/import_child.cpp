@@ -46,6 +46,21 @@ class Writer {
     put(uint64_t(s.size()));
     out_ += s;
   }
+  // A count, then the items' bytes in one piece (the mesh's arrays).
+  template <class T>
+  void put_array(const std::vector<T>& v) {
+    static_assert(std::is_trivially_copyable_v<T>, "sent as their bytes");
+    put(uint64_t(v.size()));
+    if (!v.empty()) out_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
+  // Points as their coordinates (GLM's vector is not trivially copyable,
+  // though laid out as three doubles).
+  void put_points(const std::vector<Vec3>& v) {
+    static_assert(sizeof(Vec3) == 3 * sizeof(double) && std::is_standard_layout_v<Vec3>);
+    put(uint64_t(v.size()));
+    if (!v.empty()) out_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(Vec3));
+  }
+  void reserve(size_t bytes) { out_.reserve(bytes); }
   const std::string& bytes() const { return out_; }
 
  private:
@@ -71,6 +86,23 @@ class Reader {
     return n;
   }
   bool at_end() const { return at_ == in_.size(); }
+  template <class T>
+  void get_array(std::vector<T>& v) {
+    static_assert(std::is_trivially_copyable_v<T>, "sent as their bytes");
+    v.resize(get_count(sizeof(T)));
+    if (v.empty()) return;  // no data() to copy to
+    std::memcpy(v.data(), in_.data() + at_, v.size() * sizeof(T));
+    at_ += v.size() * sizeof(T);
+  }
+  void get_points(std::vector<Vec3>& v) {
+    v.resize(get_count(sizeof(Vec3)));
+    for (Vec3& p : v) {
+      double xyz[3];
+      std::memcpy(xyz, in_.data() + at_, sizeof xyz);
+      at_ += sizeof xyz;
+      p = {xyz[0], xyz[1], xyz[2]};
+    }
+  }
   std::string get_text() {
     const uint64_t n = get<uint64_t>();
     need(n);
@@ -114,21 +146,13 @@ Vec3 get_vec(Reader& r) {
 
 void put_model(Writer& w, const ImportedModel& model) {
   const Mesh& mesh = model.mesh;
-  w.put(uint64_t(mesh.positions.size()));
-  for (const Vec3& p : mesh.positions) put_vec(w, p);
-  w.put(uint64_t(mesh.polygons.size()));
-  for (const std::vector<int>& poly : mesh.polygons) {
-    w.put(uint64_t(poly.size()));
-    for (int i : poly) w.put(i);
-  }
-  w.put(uint64_t(mesh.material.size()));
-  for (int m : mesh.material) w.put(m);
-  w.put(uint64_t(mesh.corner_colour.size()));
-  for (const CornerColour& c : mesh.corner_colour) {
-    w.put(c.r);
-    w.put(c.g);
-    w.put(c.b);
-  }
+  w.reserve(mesh.positions.size() * sizeof(Vec3) + mesh.corners.size() * (sizeof(int) + sizeof(CornerColour)) +
+            mesh.first.size() * sizeof(uint64_t) + mesh.material.size() * sizeof(int) + (1 << 16));
+  w.put_points(mesh.positions);
+  w.put_array(mesh.corners);
+  w.put_array(mesh.first);
+  w.put_array(mesh.material);
+  w.put_array(mesh.corner_colour);
   w.put(uint64_t(model.materials.size()));
   for (const std::optional<Surface>& s : model.materials) {
     w.put(char(s.has_value()));
@@ -158,21 +182,11 @@ void put_model(Writer& w, const ImportedModel& model) {
 ImportedModel get_model(Reader& r) {
   ImportedModel model;
   Mesh& mesh = model.mesh;
-  mesh.positions.resize(r.get_count(3 * sizeof(double)));
-  for (Vec3& p : mesh.positions) p = get_vec(r);
-  mesh.polygons.resize(r.get_count(sizeof(uint64_t)));
-  for (std::vector<int>& poly : mesh.polygons) {
-    poly.resize(r.get_count(sizeof(int)));
-    for (int& i : poly) i = r.get<int>();
-  }
-  mesh.material.resize(r.get_count(sizeof(int)));
-  for (int& m : mesh.material) m = r.get<int>();
-  mesh.corner_colour.resize(r.get_count(3 * sizeof(float)));
-  for (CornerColour& c : mesh.corner_colour) {
-    c.r = r.get<float>();
-    c.g = r.get<float>();
-    c.b = r.get<float>();
-  }
+  r.get_points(mesh.positions);
+  r.get_array(mesh.corners);
+  r.get_array(mesh.first);
+  r.get_array(mesh.material);
+  r.get_array(mesh.corner_colour);
   model.materials.resize(r.get_count(sizeof(char)));
   for (std::optional<Surface>& s : model.materials) {
     if (!r.get<char>()) continue;
@@ -202,18 +216,16 @@ ImportedModel get_model(Reader& r) {
     l.coloured = r.get<char>();
   }
   // What the scene reader indexes with must index within the answer.
-  const bool materials_fit = mesh.material.empty() || mesh.material.size() == mesh.polygons.size();
-  size_t corners = 0;
-  for (const std::vector<int>& poly : mesh.polygons) {
-    if (poly.size() < 3) throw std::runtime_error("the importer's answer is garbled");
-    corners += poly.size();
-    for (int i : poly)
-      if (i < 0 || size_t(i) >= mesh.positions.size()) throw std::runtime_error("the importer's answer is garbled");
-  }
+  const auto garbled = [] { throw std::runtime_error("the importer's answer is garbled"); };
+  if (mesh.first.empty() || mesh.first.front() != 0 || mesh.first.back() != mesh.corners.size()) garbled();
+  for (size_t i = 0; i + 1 < mesh.first.size(); ++i)
+    if (mesh.first[i + 1] < mesh.first[i] + 3) garbled();  // out of order, or fewer than 3 corners
+  for (int i : mesh.corners)
+    if (i < 0 || size_t(i) >= mesh.positions.size()) garbled();
   for (int m : mesh.material)
-    if (m < 0 || size_t(m) >= model.materials.size()) throw std::runtime_error("the importer's answer is garbled");
-  if (!materials_fit || (!mesh.corner_colour.empty() && mesh.corner_colour.size() != corners))
-    throw std::runtime_error("the importer's answer is garbled");
+    if (m < 0 || size_t(m) >= model.materials.size()) garbled();
+  if (!mesh.material.empty() && mesh.material.size() != mesh.polygon_count()) garbled();
+  if (!mesh.corner_colour.empty() && mesh.corner_colour.size() != mesh.corners.size()) garbled();
   return model;
 }
 
@@ -325,7 +337,8 @@ ImportedModel import_in_child(const std::string& path, const ImportLimits& limit
   std::string bytes;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limits.seconds);
   bool timed_out = false;
-  char buf[1 << 16];
+  std::vector<char> chunk(1 << 20);
+  char* buf = chunk.data();
   for (;;) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) {
@@ -336,7 +349,7 @@ ImportedModel import_in_child(const std::string& path, const ImportLimits& limit
     const int ready = poll(&p, 1, int(std::min<int64_t>(left.count(), 1000)));
     if (ready < 0 && errno == EINTR) continue;
     if (ready <= 0) continue;
-    const ssize_t n = ::read(fds[0], buf, sizeof buf);
+    const ssize_t n = ::read(fds[0], buf, chunk.size());
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;  // the child closed its end
     bytes.append(buf, size_t(n));

@@ -172,7 +172,7 @@ class MeshBuilder {
       fail(path_, 0,
            "assimp 5.2.5 returned " + std::to_string(faces_read_) + " polygons where the pre-check counted " +
                std::to_string(*file_polygons) + ": refused rather than drawn wrong");
-    if (model_.mesh.polygons.empty()) fail(path_, 0, "the model has no polygons (points and lines are not drawn)");
+    if (model_.mesh.polygon_count() == 0) fail(path_, 0, "the model has no polygons (points and lines are not drawn)");
     model_.materials = look_.surfaces();
     if (!any_corner_colour_) model_.mesh.corner_colour.clear();
     add_cameras();
@@ -215,7 +215,7 @@ class MeshBuilder {
       if (face.mNumIndices > kMaxPolygonVertices)
         fail(path_, 0, "face " + std::to_string(f) + " has " + std::to_string(face.mNumIndices) + " vertices (limit " +
                            std::to_string(kMaxPolygonVertices) + ")");
-      if (mesh.polygons.size() >= kMaxModelPolygons)
+      if (mesh.polygon_count() >= kMaxModelPolygons)
         fail(path_, 0, "more than " + std::to_string(kMaxModelPolygons) + " polygons");
       corners.clear();
       uv.clear();
@@ -240,13 +240,11 @@ class MeshBuilder {
       if (mirrors) std::reverse(corners.begin(), corners.end());
       drop_repeated_corners(corners, [](const Corner& a, const Corner& b) { return a.index == b.index; });
       if (corners.size() < 3) continue;
-      std::vector<int> poly;
-      poly.reserve(corners.size());
       for (const Corner& c : corners) {
-        poly.push_back(c.index);
+        mesh.corners.push_back(c.index);
         mesh.corner_colour.push_back(c.colour);
       }
-      mesh.polygons.push_back(std::move(poly));
+      mesh.first.push_back(mesh.corners.size());
       mesh.material.push_back(key);
       any_corner_colour_ = any_corner_colour_ || vertex_colours || textured;
     }

@@ -30,7 +30,7 @@ void choose_surfaces(Instance& in, const std::optional<Surface>& chosen) {
   in.group_surface.assign(size_t(in.groups.count), chosen ? *chosen : SceneDefaults::material());
   in.corner_colours = !chosen && !mesh.corner_colour.empty();
   if (chosen || mesh.material.empty()) return;
-  for (size_t i = 0; i < mesh.polygons.size(); ++i)  // a group holds one material (surface_groups.hpp)
+  for (size_t i = 0; i < mesh.polygon_count(); ++i)  // a group holds one material (surface_groups.hpp)
     if (const std::optional<Surface>& m = in.model->materials.at(size_t(mesh.material[i])))
       in.group_surface[size_t(in.groups.group[i])] = *m;
 }
@@ -43,16 +43,17 @@ void place(const std::vector<Instance>& instances, WorldFrame& w) {
     std::vector<Vec3> moved;
     moved.reserve(mesh.positions.size());
     for (const Vec3& p : mesh.positions) moved.push_back(in.transform.apply(p));
-    w.objects.push_back({w.polygons.size(), mesh.polygons.size()});
-    size_t corner = 0;  // the polygon's first in mesh.corner_colour
-    for (size_t i = 0; i < mesh.polygons.size(); ++i) {
+    w.objects.push_back({w.polygons.size(), mesh.polygon_count()});
+    w.polygons.reserve(w.polygons.size() + mesh.polygon_count());
+    for (size_t i = 0; i < mesh.polygon_count(); ++i) {
       WorldPolygon poly;
       poly.surface = base + in.groups.group[i];
-      for (int k : mesh.polygons[i]) poly.p.push_back(moved[static_cast<size_t>(k)]);
+      const CornerSpan corners = mesh.polygon(i);
+      poly.p.reserve(corners.size);
+      for (int k : corners) poly.p.push_back(moved[static_cast<size_t>(k)]);
       if (in.corner_colours)
-        poly.colour.assign(mesh.corner_colour.begin() + std::ptrdiff_t(corner),
-                           mesh.corner_colour.begin() + std::ptrdiff_t(corner + poly.p.size()));
-      corner += poly.p.size();
+        poly.colour.assign(mesh.corner_colour.begin() + std::ptrdiff_t(mesh.first[i]),
+                           mesh.corner_colour.begin() + std::ptrdiff_t(mesh.first[i + 1]));
       if (in.transform.mirrors()) {  // keep the front counter-clockwise
         std::reverse(poly.p.begin(), poly.p.end());
         std::reverse(poly.colour.begin(), poly.colour.end());

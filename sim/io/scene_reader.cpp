@@ -11,8 +11,10 @@
 #include <sstream>
 #include <tuple>
 
+#include <absl/container/flat_hash_map.h>
 #include <nlohmann/json.hpp>
 
+#include "common/equal_keys.hpp"
 #include "common/file_text.hpp"
 #include "common/input_error.hpp"
 #include "common/json_text.hpp"
@@ -311,16 +313,16 @@ class SceneReader {
     const size_t n = at(ptr / "vertices").size();
     if (n > size_t(std::numeric_limits<int>::max())) fail(ptr / "vertices", "too many vertices");
     std::vector<int> index_of(n);
-    std::map<std::tuple<double, double, double>, int> merged;
+    absl::flat_hash_map<std::tuple<double, double, double>, int> merged;
     for (size_t i = 0; i < n; ++i) {
       const Vec3 p = vec3(ptr / "vertices" / i);
-      auto [it, fresh] = merged.emplace(std::make_tuple(p.x, p.y, p.z), static_cast<int>(m->positions.size()));
+      auto [it, fresh] = merged.try_emplace(std::make_tuple(same_zero(p.x), same_zero(p.y), same_zero(p.z)),
+                                            static_cast<int>(m->positions.size()));
       if (fresh) m->positions.push_back(p);
       index_of[i] = it->second;
     }
     const json& polys = at(ptr / "polygons");
     if (polys.size() > kMaxModelPolygons) fail(ptr / "polygons", "more than " + std::to_string(kMaxModelPolygons) + " polygons");
-    m->polygons.reserve(polys.size());
     for (size_t i = 0; i < polys.size(); ++i) {
       const Ptr pp = ptr / "polygons" / i;
       if (!polys[i].is_array() || polys[i].size() < 3 || polys[i].size() > kMaxPolygonVertices)
@@ -329,9 +331,9 @@ class SceneReader {
       poly.reserve(polys[i].size());
       for (size_t k = 0; k < polys[i].size(); ++k) poly.push_back(index_of[size_t(integer(pp / k, 0, int64_t(n) - 1))]);
       drop_repeated_corners(poly, [](int a, int b) { return a == b; });
-      if (poly.size() >= 3) m->polygons.push_back(std::move(poly));
+      if (poly.size() >= 3) m->add_polygon(poly.begin(), poly.end());
     }
-    if (m->polygons.empty()) fail(ptr / "polygons", "the mesh has no polygon with three distinct corners");
+    if (m->polygon_count() == 0) fail(ptr / "polygons", "the mesh has no polygon with three distinct corners");
     return model;
   }
 
@@ -406,7 +408,7 @@ class SceneReader {
   void check_corners(const std::vector<Instance>& instances, size_t frames, const Ptr& where) const {
     uint64_t per_frame = 0;
     for (const Instance& in : instances)
-      for (const std::vector<int>& p : in.mesh().polygons) per_frame += p.size();
+      per_frame += in.mesh().corners.size();
     if (per_frame > kMaxSceneCorners / frames)
       fail(where, std::to_string(frames) + (frames == 1 ? " frame" : " frames") + " x " + std::to_string(per_frame) +
                       " polygon corners is more than the " + std::to_string(kMaxSceneCorners) +

@@ -38,7 +38,8 @@ TEST_CASE("model import child: the model and the warnings come back as made", "[
     w.push_back("m.obj: a warning");
     ImportedModel m;
     m.mesh.positions = {{0, 0, 0}, {1.5, 0, -2}, {0, 1e-300, 3}, {1, 1, 1}};
-    m.mesh.polygons = {{0, 1, 2}, {0, 2, 3, 1}};
+    m.mesh.corners = {0, 1, 2, 0, 2, 3, 1};
+    m.mesh.first = {0, 3, 7};
     m.mesh.material = {1, 0};
     m.mesh.corner_colour = {{1, 2, 3}, {4, 5, 6}, {7, 8, 9}, {10, 11, 12}, {13, 14, 15}, {16, 17, 18}, {19, 20, 21}};
     m.materials = {std::nullopt, red};
@@ -47,7 +48,8 @@ TEST_CASE("model import child: the model and the warnings come back as made", "[
     return m;
   }, warnings);
   CHECK(got.mesh.positions == std::vector<Vec3>{{0, 0, 0}, {1.5, 0, -2}, {0, 1e-300, 3}, {1, 1, 1}});
-  CHECK(got.mesh.polygons == std::vector<std::vector<int>>{{0, 1, 2}, {0, 2, 3, 1}});
+  CHECK(got.mesh.corners == std::vector<int>{0, 1, 2, 0, 2, 3, 1});
+  CHECK(got.mesh.first == std::vector<uint64_t>{0, 3, 7});
   CHECK(got.mesh.material == std::vector<int>{1, 0});
   REQUIRE(got.mesh.corner_colour.size() == 7);
   CHECK(got.mesh.corner_colour[6].b == 21);

@@ -35,7 +35,7 @@ TEST_CASE("model messages: a missing material library is one warning, and the mo
   const std::string path = temp_file("nomtl.obj", "mtllib gone.mtl\n" + kTriangle +
                                                       "usemtl red\nf 1 2 3\nusemtl blue\nf 2 4 3\n");
   const Imported m = import(path);
-  CHECK(m.mesh.polygons.size() == 2);
+  CHECK(m.mesh.polygon_count() == 2);
   REQUIRE(m.warnings.size() == 1);  // not one per usemtl
   CHECK(m.warnings[0].rfind(path + ":1: material library 'gone.mtl' not found", 0) == 0);
 }
@@ -46,7 +46,7 @@ TEST_CASE("model messages: usemtl of an unknown name is a warning once per name"
                                                        "usemtl red\nf 1 2 3\nusemtl nosuch\nf 2 4 3\nusemtl nosuch\n"
                                                        "f 1 4 3\n");
   const Imported m = import(path);
-  CHECK(m.mesh.polygons.size() == 3);
+  CHECK(m.mesh.polygon_count() == 3);
   REQUIRE(m.warnings.size() == 1);
   CHECK(m.warnings[0].rfind(path + ":8: usemtl 'nosuch' names no material", 0) == 0);
 }
@@ -56,7 +56,7 @@ TEST_CASE("model messages: a broken material library does not stop the model (de
   const std::string path = temp_file("brokenmtl.obj", "mtllib girtd_frontend_test_broken.mtl\n" + kTriangle +
                                                           "usemtl m\nf 1 2 3\n");
   const Imported m = import(path);
-  CHECK(m.mesh.polygons.size() == 1);
+  CHECK(m.mesh.polygon_count() == 1);
   REQUIRE(m.warnings.size() == 1);
   CHECK(m.warnings[0].rfind(path + ": the files it names (its material library) could not be read", 0) == 0);
 }
@@ -64,7 +64,7 @@ TEST_CASE("model messages: a broken material library does not stop the model (de
 TEST_CASE("model messages: an empty face is a warning (assimp's Err), the rest is drawn", "[frontend]") {
   const std::string path = temp_file("emptyface.obj", kTriangle + "f\nf 1 2 3\n");
   const Imported m = import(path);
-  CHECK(m.mesh.polygons.size() == 1);
+  CHECK(m.mesh.polygon_count() == 1);
   CHECK(m.warnings == std::vector<std::string>{path + ": Obj: Ignoring empty face"});
 }
 
@@ -153,7 +153,7 @@ TEST_CASE("model messages: what assimp 5.2.5 would misread without a word is ref
 TEST_CASE("model messages: a continuation joins lines as assimp does", "[frontend]") {
   // "f 1 2 \" + "3": the face 1 2 3, the same polygons as the joined file.
   const Imported m = import(temp_file("joined.obj", kTriangle + "f 1 2 \\\n3\nf 2 \\\n 4 3\n"));
-  CHECK(m.mesh.polygons.size() == 2);
+  CHECK(m.mesh.polygon_count() == 2);
   CHECK(m.warnings.empty());
   // "f 1\" + "2 3 4": assimp reads "f 12 3 4", a triangle, where the writer likely meant a quad.
   std::string twelve;
@@ -227,7 +227,7 @@ TEST_CASE("model messages: a round-trip double is read, digits assimp drops are 
   // An exporter's doubles: assimp drops the digits past the 15th, and the float it reads is the same.
   const Imported m = import(temp_file("roundtrip.obj", "v 0.0009999999983333334 0 0\nv 1.0000000000000000001 0 0\n"
                                                        "v 0 0.99999999999999999 0\nf 1 2 3\n"));
-  CHECK(m.mesh.polygons.size() == 1);
+  CHECK(m.mesh.polygon_count() == 1);
   CHECK(m.warnings.empty());
   CHECK(std::abs(m.mesh.positions[0].x - 0.0009999999983333334) < 3e-10);  // a float's step there: 1.2e-10
   // Just past the midpoint between 1 and the next float: without its last digits, below it (1.0).

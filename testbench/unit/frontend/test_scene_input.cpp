@@ -33,17 +33,17 @@ Mesh import_clean(const std::string& path) {
 TEST_CASE("model import: polygons stay polygons, corners are shared", "[frontend]") {
   const Mesh cube = import_clean(kModels + "cube.obj");
   CHECK(cube.positions.size() == 8);
-  REQUIRE(cube.polygons.size() == 6);
-  CHECK(cube.polygons[0].size() == 4);
+  REQUIRE(cube.polygon_count() == 6);
+  CHECK(cube.polygon(0).size == 4);
   const Mesh off = import_clean(kModels + "cube.off");
-  CHECK(off.polygons.size() == 6);
+  CHECK(off.polygon_count() == 6);
   // Binary STL repeats every corner: merged back to the sphere's 12 x 24 - ... = 266 positions
   // (2 poles + 11 rings x 24).
   const Mesh stl = import_clean(kModels + "sphere.stl");
   CHECK(stl.positions.size() == 2 + 11 * 24);
-  CHECK(stl.polygons.size() == 2 * 24 + 2 * 240);
+  CHECK(stl.polygon_count() == 2 * 24 + 2 * 240);
   const Mesh ply = import_clean(kModels + "sphere.ply");
-  CHECK(ply.polygons.size() == 2 * 24 + 240);
+  CHECK(ply.polygon_count() == 2 * 24 + 240);
 }
 
 TEST_CASE("model import: broken files are InputErrors naming the file", "[frontend]") {
@@ -105,8 +105,8 @@ TEST_CASE("model import: PLY list lengths are checked before assimp allocates fo
     const std::string path = temp_file(big ? "be.ply" : "le.ply", binary_ply(big, {{4, 0, 1, 2, 3}, {3, 0, 1, 2}}));
     const Mesh m = import_clean(path);
     CHECK(m.positions.size() == 4);
-    REQUIRE(m.polygons.size() == 2);
-    CHECK(m.polygons[0].size() == 4);
+    REQUIRE(m.polygon_count() == 2);
+    CHECK(m.polygon(0).size == 4);
   }
   // 10^8 indices claimed in a 200-byte file (assimp took 800 MB for it).
   CHECK(error_of([] { import_clean(temp_file("huge.ply", binary_ply(false, {{100000000, 0, 1, 2}}))); }) ==
