@@ -18,6 +18,7 @@
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
 #include "engine/backend_registry.hpp"
+#include "io/progress_line.hpp"
 #include "rtl/rtl_variants.hpp"
 #include "stress/stress_cases.hpp"
 #include "stress/stress_command.hpp"
@@ -221,12 +222,14 @@ int main(int argc, char** argv) {
     if (*accuracy) return run_accuracy(ac);
     if (*sweep) return run_sweep(sw);
   } catch (const InputError& e) {
+    ProgressLine::get().end();
     std::fprintf(stderr, "%s\n", e.formatted().c_str());
     return 2;
   } catch (const MissingPrerequisite& e) {
     std::fprintf(stderr, "girtd: %s\n", e.what());
     return kExitMissingPrerequisite;
   } catch (const std::exception& e) {
+    ProgressLine::get().end();
     std::fprintf(stderr, "girtd: internal error: %s\n", e.what());
     return 3;
   }

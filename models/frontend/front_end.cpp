@@ -22,6 +22,7 @@ std::vector<Triangle> FrontEnd::run_frame(const WorldFrame& frame, const Window&
   for (const WorldObject& object : frame_objects(frame)) {
     if (!s.keep_object(object)) continue;
     for (size_t i = object.first; i < object.first + object.count; ++i) {
+      if (report_ && (i & 0x3fff) == 0) report_(i, frame.polygons.size());
       if (!s.keep_polygon(i) || !s.light(i, lit)) continue;
       s.view(lit);
       if (!s.depth_clip(lit, clipped)) continue;
@@ -35,6 +36,7 @@ std::vector<Triangle> FrontEnd::run_frame(const WorldFrame& frame, const Window&
         }
     }
   }
+  if (report_) report_(frame.polygons.size(), frame.polygons.size());
   const DepthMap depth = s.depth_map();
   for (Triangle& t : out) FrontEndStages::map_depth(t, depth);
   s.sort(out, ids);

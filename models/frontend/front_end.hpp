@@ -7,6 +7,7 @@
 // them one module each); this runs them back to back.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "common/types.hpp"
@@ -23,9 +24,13 @@ class FrontEnd {
   // triangles, farthest first, with their interior edges marked.
   std::vector<Triangle> run_frame(const WorldFrame& frame, const Window& window, double q = 1.0);
   FrontendCounts counts() const { return stages_.counts(); }
+  // Called now and then during run_frame with the frame's polygons done and
+  // their total (a progress line).
+  void on_progress(std::function<void(size_t done, size_t total)> report) { report_ = std::move(report); }
 
  private:
   FrontEndStages stages_;
+  std::function<void(size_t, size_t)> report_;
 };
 
 }  // namespace girtd

@@ -15,6 +15,7 @@
 #include "config/config_layers.hpp"
 #include "engine/backend_registry.hpp"
 #include "io/input_reader.hpp"
+#include "io/progress_line.hpp"
 #include "io/scene_reader.hpp"
 #include "io/sha256.hpp"
 #include "layout/rtl_package.hpp"
@@ -146,10 +147,13 @@ RenderResult render(const RenderRequest& a) {
                          rtl_build_differences(nlohmann::json::parse(built_rtl_values()), rtl_build_values(params)) +
                          "): render it with tools/girtd, which builds that RTL variant");
   const uint64_t passes_before = front_end_passes();
+  ProgressLine::get().start(a.progress);
   const LoadedInput input = load_input(a, params, !entry.timed());
   const std::vector<std::string>& input_warnings = input.polygons ? input.polygons->warnings : input.trace.warnings;
   auto warn = [&](const std::string& w) {
-    if (a.print_warnings) std::fprintf(stderr, "warning: %s\n", one_line(w).c_str());
+    if (!a.print_warnings) return;
+    ProgressLine::get().end();
+    std::fprintf(stderr, "warning: %s\n", one_line(w).c_str());
   };
   for (const std::string& w : input_warnings) warn(w);
 

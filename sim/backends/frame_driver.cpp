@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "io/progress_line.hpp"
+
 namespace girtd {
 
 FrameDriver::FrameDriver(std::string backend, const Trace& input, const Params& p, const RenderOptions& opt)
@@ -25,19 +27,13 @@ void FrameDriver::frame_ended(const std::function<RgbImage()>& shown) {
 
 void FrameDriver::progress(size_t frame, uint64_t done, uint64_t total, const char* unit, const std::string& detail) {
   if (!show_progress_) return;
-  const double wall = wall_s();
-  if (wall < 1.0) return;
-  const double share = total ? double(done) / double(total) : 0.0;
-  char eta[48] = "";
-  if (share > 0 && share < 1) std::snprintf(eta, sizeof eta, ", about %.0f s left", wall * (1 - share) / share);
-  std::fprintf(stderr, "\r[girtd] %s: frame %zu/%zu, %llu/%llu %s (%.0f %%)%s, %.1f s wall%s ", backend_.c_str(),
-               frame + 1, frames_, static_cast<unsigned long long>(done), static_cast<unsigned long long>(total), unit,
-               100.0 * share, detail.c_str(), wall, eta);
-  printed_ = true;
+  const std::string where =
+      frames_ > 1 && std::string(unit) != "frames" ? ", frame " + std::to_string(frame + 1) + "/" + std::to_string(frames_) : "";
+  ProgressLine::get().step(backend_, done, total, unit, detail, where);
 }
 
 void FrameDriver::finish(RenderOutput& out) {
-  if (printed_) std::fprintf(stderr, "\n");
+  ProgressLine::get().end();
   out.per_frame = std::move(kept_);
   if (tap_) tap_->commit();
 }

@@ -37,8 +37,8 @@ class FrameDriver {
   // A frame ended with its swap; `shown` is read only when frames are kept.
   void frame_ended(const std::function<RgbImage()>& shown);
   // How far the run is: `done` of `total` `unit` (polygons lit, triangles,
-  // frames) in frame `frame`; `detail` follows. Printed on a terminal once
-  // the run has taken a second, with the time left at this pace.
+  // frames) in frame `frame`; `detail` follows. On the run's progress line
+  // (io/progress_line.hpp).
   void progress(size_t frame, uint64_t done, uint64_t total, const char* unit, const std::string& detail = "");
 
   // After the run: the kept frames into `out`, the tap committed, the
@@ -52,7 +52,6 @@ class FrameDriver {
   std::unique_ptr<DumpTap> tap_;
   std::vector<RgbImage> kept_;
   std::chrono::steady_clock::time_point t0_;
-  bool printed_ = false;
 };
 
 }  // namespace girtd

@@ -1,6 +1,7 @@
 #include "backends/front_end_runner.hpp"
 
 #include "frontend/front_end.hpp"
+#include "io/progress_line.hpp"
 
 namespace girtd {
 
@@ -26,11 +27,16 @@ FrontEndRun run_front_end(const Trace& polygons, const Params& params, const Pru
   FrontEndRun run;
   run.triangles.path = polygons.path;
   run.triangles.level = TraceLevel::kTriangle;
+  // The progress line counts polygons over every frame.
+  uint64_t all = 0, before = 0;
+  for (const TraceFrame& in : polygons.frames) all += in.world.polygons.size();
+  fe.on_progress([&](size_t done, size_t) { ProgressLine::get().step("front end", before + done, all, "polygons"); });
   for (const TraceFrame& in : polygons.frames) {
     TraceFrame out;
     out.settings = in.settings;
     out.triangles = fe.run_frame(in.world, in.settings.window, in.settings.q);
     run.triangles.frames.push_back(std::move(out));
+    before += in.world.polygons.size();
   }
   run.counts = fe.counts();
   return run;

@@ -34,7 +34,10 @@ RenderOutput render_trace(const BackendEntry& entry, const Trace& trace, const P
     if (dda_tap) tap->begin_frame(f.settings);
     else if (tap) tap->frame(tap->level() == TraceLevel::kPolygon ? input.frames[i] : f);
     backend.begin_frame(f.settings);
-    for (const Triangle& t : f.triangles) backend.draw(t);
+    for (size_t k = 0; k < f.triangles.size(); ++k) {
+      backend.draw(f.triangles[k]);
+      if (n_frames == 1 && (k & 0xffff) == 0xffff) driver.progress(i, k + 1, f.triangles.size(), "triangles");
+    }
     for (const DdaParams& d : f.dda) backend.draw(d);
     backend.end_frame();
     ++out.stats.frames;

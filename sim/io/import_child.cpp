@@ -4,12 +4,15 @@
 #include <poll.h>
 #include <sys/prctl.h>
 #include <signal.h>
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
+#include <filesystem>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -19,6 +22,7 @@
 #include <stdexcept>
 
 #include "common/input_error.hpp"
+#include "io/progress_line.hpp"
 
 // ASan reserves terabytes of address space: no limit on it there.
 #if defined(__SANITIZE_ADDRESS__)
@@ -120,6 +124,12 @@ class Reader {
 };
 
 constexpr char kModelTag = 'M', kErrorTag = 'E';
+
+// The import's progress in thousandths, in a page the parent and the child
+// share (set in the child only).
+using SharedProgress = std::atomic<uint32_t>;
+static_assert(SharedProgress::is_always_lock_free, "shared between processes");
+SharedProgress* child_progress = nullptr;
 
 // offset: a byte in a binary file, or -1.
 std::string error_answer(int64_t line, int64_t offset, const std::string& what) {
@@ -308,6 +318,10 @@ uint64_t address_space_bytes() {
 
 }  // namespace
 
+void report_import_progress(double share) {
+  if (child_progress) child_progress->store(uint32_t(std::clamp(share, 0.0, 1.0) * 1000), std::memory_order_relaxed);
+}
+
 std::string out_of_memory_message(const ImportLimits& limits) {
   return "cannot read the model: the importer ran out of memory (its limit: " +
          std::to_string(limits.memory_bytes >> 20) + " MiB more than the process held)";
@@ -318,6 +332,14 @@ ImportedModel import_in_child(const std::string& path, const ImportLimits& limit
                               std::vector<std::string>& warnings) {
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) refuse(path, std::string("could not start: no pipe (") + strerror(errno) + ")");
+  void* page = mmap(nullptr, sizeof(SharedProgress), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+  SharedProgress* progress = page == MAP_FAILED ? nullptr : new (page) SharedProgress(0);
+  struct Unmap {
+    void* page;
+    ~Unmap() {
+      if (page != MAP_FAILED) munmap(page, sizeof(SharedProgress));
+    }
+  } unmap{page};
   std::fflush(stdout);
   std::fflush(stderr);
   const pid_t parent = getpid();
@@ -330,8 +352,10 @@ ImportedModel import_in_child(const std::string& path, const ImportLimits& limit
   }
   if (pid == 0) {
     ::close(fds[0]);
+    child_progress = progress;
     run_child(fds[1], parent, limits, import);
   }
+  const std::string step = "reading " + std::filesystem::path(path).filename().string();
   ::close(fds[1]);
   // Read until the child closes its end, or until the time is up.
   std::string bytes;
@@ -345,8 +369,9 @@ ImportedModel import_in_child(const std::string& path, const ImportLimits& limit
       timed_out = true;
       break;
     }
+    if (progress) ProgressLine::get().step(step, progress->load(std::memory_order_relaxed), 1000, "");
     pollfd p{fds[0], POLLIN, 0};
-    const int ready = poll(&p, 1, int(std::min<int64_t>(left.count(), 1000)));
+    const int ready = poll(&p, 1, int(std::min<int64_t>(left.count(), 200)));
     if (ready < 0 && errno == EINTR) continue;
     if (ready <= 0) continue;
     const ssize_t n = ::read(fds[0], buf, chunk.size());

@@ -18,6 +18,10 @@ namespace girtd {
 // child, or caught by assimp itself and passed on as its error text).
 std::string out_of_memory_message(const ImportLimits& limits);
 
+// Called inside `import` (in the child): how much of the file it has read,
+// 0..1, shown on the parent's progress line (io/progress_line.hpp).
+void report_import_progress(double share);
+
 // Runs `import` in a child under `limits`; returns its model and appends its
 // warnings, or throws its InputError (or "FILE: cannot read the model: the
 // importer ..." when it crashed, ran out of memory or time).

@@ -5,6 +5,7 @@
 #include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/LogStream.hpp>
+#include <assimp/ProgressHandler.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -109,6 +110,22 @@ class MessageLog : public Assimp::LogStream {
   std::vector<std::pair<std::string, int>> warnings_;
 };
 
+// The import's progress line: assimp's reading is the first kReadShare of
+// it, MeshBuilder's the rest. Readers that report file reading (OBJ, PLY,
+// ...) report it as the first half of Update's range, post-processing the
+// second: here reading is the whole.
+constexpr double kReadShare = 0.8;
+class ReadProgress : public Assimp::ProgressHandler {
+ public:
+  bool Update(float share) override {
+    if (share >= 0) report_import_progress(kReadShare * share);
+    return true;
+  }
+  void UpdateFileRead(int step, int steps) override {
+    if (steps > 0) report_import_progress(kReadShare * double(step) / double(steps));
+  }
+};
+
 // Opens regular files only: a model naming a FIFO or a device (as a glTF's
 // buffer or an OBJ's material library) would block or read forever.
 class RegularFilesOnly : public Assimp::DefaultIOSystem {
@@ -153,7 +170,9 @@ class OnlyTheModelFile : public Assimp::DefaultIOSystem {
 class MeshBuilder {
  public:
   MeshBuilder(const std::string& path, const aiScene& scene, const MadeUpMaterials& made_up)
-      : path_(path), scene_(scene), look_(scene, path, made_up) {}
+      : path_(path), scene_(scene), look_(scene, path, made_up) {
+    for (unsigned i = 0; i < scene.mNumMeshes; ++i) faces_in_file_ += scene.mMeshes[i]->mNumFaces;
+  }
 
   void add(const aiNode& node, const aiMatrix4x4& parent) {
     const aiMatrix4x4 m = parent * node.mTransformation;
@@ -209,6 +228,8 @@ class MeshBuilder {
     std::vector<Corner> corners;
     std::vector<aiVector3D> uv;
     for (unsigned f = 0; f < am.mNumFaces; ++f) {
+      if ((++faces_seen_ & 0xffff) == 0 && faces_in_file_ > 0)
+        report_import_progress(kReadShare + (1 - kReadShare) * double(faces_seen_) / double(faces_in_file_));
       const aiFace& face = am.mFaces[f];
       if (face.mNumIndices < 3) continue;  // points and lines
       ++faces_read_;
@@ -333,6 +354,7 @@ class MeshBuilder {
   ModelLook look_;
   ImportedModel model_;
   uint64_t faces_read_ = 0;
+  uint64_t faces_seen_ = 0, faces_in_file_ = 0;  // for the progress line (a mesh placed twice counts twice)
   bool any_corner_colour_ = false;
   // Vertices weld by position (-0 and 0 alike), across the file's meshes.
   absl::flat_hash_map<std::tuple<double, double, double>, int> index_;
@@ -385,6 +407,7 @@ ImportedModel assimp_import(const std::string& path, const std::optional<Prechec
     MessageLog log;
     Assimp::Importer importer;
     importer.SetIOHandler(new RegularFilesOnly());  // the importer owns it
+    importer.SetProgressHandler(new ReadProgress());  // likewise
     const aiScene* scene = importer.ReadFile(path, flags);
     if (scene && scene->mRootNode && log.first_error().empty()) return build(path, *scene, checked, false, log, warnings);
     if (!checked) {
@@ -398,6 +421,7 @@ ImportedModel assimp_import(const std::string& path, const std::optional<Prechec
   MessageLog log;
   Assimp::Importer importer;
   importer.SetIOHandler(new OnlyTheModelFile(path));
+  importer.SetProgressHandler(new ReadProgress());
   const aiScene* scene = importer.ReadFile(path, flags);
   if (!scene || !scene->mRootNode) fail_assimp(path, importer);
   if (!log.first_error().empty()) fail(path, 0, "cannot read the model: " + log.first_error());

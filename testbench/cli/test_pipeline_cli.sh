@@ -85,7 +85,7 @@ cmp -s <(grep -v '^#' "$TMP/an_golden.trace") <(grep -v '^#' "$TMP/an_approx.tra
 script -qec "'$GIRTD' render traces/scenes/demo.json --backend rtl --repeat 3 --out '$TMP/win' --quiet" /dev/null \
   > "$TMP/tty" 2>&1 || true
 [[ -s "$TMP/win/report.json" ]] && ok || bad "render on a terminal"
-grep -qE "\[girtd\] rtl: frame [1-3]/3, [0-9]+/[0-9]+ objects in \([0-9]+ %\), [0-9]+ triangles drawn" "$TMP/tty" && ok || bad "no progress line: $(tail -c 300 "$TMP/tty")"
+grep -qE "\[girtd\] rtl, frame [1-3]/3: [0-9]+/[0-9]+ objects in \([0-9]+ %\), [0-9]+ triangles drawn" "$TMP/tty" && ok || bad "no progress line: $(tail -c 300 "$TMP/tty")"
 "$RUN" render traces/scenes/window.json --backend rtl --out "$TMP/win2" --quiet 2> "$TMP/err" && ok || bad "rtl render"
 check_registry "$TMP/win2/report.json"
 [[ ! -s "$TMP/err" ]] && ok || bad "stderr not empty without a terminal: $(head -c 200 "$TMP/err")"

@@ -35,7 +35,20 @@ jq -e '.scale.exponents | has("golden_time") and has("approx_memory")' "$TMP/sb/
 jq -e '.scale.timed == "tools/girtd render"' "$TMP/sb/scale.json" >/dev/null && ok || bad "not timed through the driver"
 grep -q "| golden time at most 3x assimp's |" "$TMP/sb/scale.md" && ok || bad "scale.md lacks the bars"
 
-# 3. --sizes without --scale is refused.
+# 3. A long render shows its progress on a terminal, each step with its
+#    time left: the model's reading (in the import's child), the front end,
+#    the back end. (The line starts after a second: reading takes longer
+#    than that from about 700,000 triangles on.)
+"$PYTHON" tools/make_mesh.py sphere --triangles 800000 -o "$TMP/big.obj" >/dev/null
+script -qec "'$GIRTD' render '$TMP/big.obj' --out '$TMP/big' --quiet" /dev/null > "$TMP/tty" 2>&1 || true
+[[ -s "$TMP/big/report.json" ]] && ok || bad "render on a terminal"
+tr '\r' '\n' < "$TMP/tty" > "$TMP/lines"
+for step in "reading big.obj: [0-9]+ %" "front end: [0-9]+/800112 polygons \([0-9]+ %\)" "golden: [0-9]+/800112 triangles"; do
+  grep -qE "\[girtd\] $step" "$TMP/lines" && ok || bad "no progress line for '$step': $(tail -c 300 "$TMP/lines")"
+done
+grep -qE "about [0-9]+ s left" "$TMP/lines" && ok || bad "no time left on the progress line"
+
+# 4. --sizes without --scale is refused.
 "$GIRTD" bench --sizes 300 2> "$TMP/err"; rc=$?
 [[ $rc -ne 0 ]] && ok || bad "--sizes without --scale was taken"
 finish
