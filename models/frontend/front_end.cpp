@@ -37,6 +37,7 @@ std::vector<Triangle> FrontEnd::run_frame(const WorldFrame& frame, const Window&
     }
   }
   if (report_) report_(frame.polygons.size(), frame.polygons.size());
+  s.lighting_done();
   const DepthMap depth = s.depth_map();
   for (Triangle& t : out) FrontEndStages::map_depth(t, depth);
   s.sort(out, ids);

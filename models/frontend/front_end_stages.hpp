@@ -102,6 +102,9 @@ class FrontEndStages {
   bool light(size_t polygon, FrontPolygon& out);
   std::optional<FrontPolygon> light(size_t polygon);
   void view(FrontPolygon& p) const;
+  // The frame's last polygon is lit: the shared normals' memory goes (the
+  // depth sort and its edge marking need theirs next).
+  void lighting_done() { normals_ = {}; }
   // Keeps Zs > C; false when nothing is left.
   bool depth_clip(const FrontPolygon& p, FrontPolygon& out);
   std::optional<FrontPolygon> depth_clip(const FrontPolygon& p);
