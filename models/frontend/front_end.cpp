@@ -2,7 +2,7 @@
 
 namespace girtd {
 
-std::vector<Triangle> FrontEnd::run_frame(const WorldFrame& frame, const Window& window, double q) {
+std::vector<Triangle> FrontEnd::run(const WorldFrame& frame, const Window& window, double q, WorldFrame* release) {
   FrontEndStages& s = stages_;
   s.begin_frame(frame, window, q);
   // A polygon's way through the stages, in storage reused for the next one.
@@ -38,6 +38,7 @@ std::vector<Triangle> FrontEnd::run_frame(const WorldFrame& frame, const Window&
   }
   if (report_) report_(frame.polygons.size(), frame.polygons.size());
   s.lighting_done();
+  if (release) std::vector<WorldPolygon>().swap(release->polygons);
   const DepthMap depth = s.depth_map();
   for (Triangle& t : out) FrontEndStages::map_depth(t, depth);
   s.sort(out, ids);

@@ -22,13 +22,21 @@ class FrontEnd {
 
   // `q`: the frame's AA width (object culling's margin). The frame's
   // triangles, farthest first, with their interior edges marked.
-  std::vector<Triangle> run_frame(const WorldFrame& frame, const Window& window, double q = 1.0);
+  std::vector<Triangle> run_frame(const WorldFrame& frame, const Window& window, double q = 1.0) {
+    return run(frame, window, q, nullptr);
+  }
+  // The same, and the frame's polygons released once the stages are through
+  // with them, before the depth sort needs its memory.
+  std::vector<Triangle> run_frame_releasing(WorldFrame& frame, const Window& window, double q = 1.0) {
+    return run(frame, window, q, &frame);
+  }
   FrontendCounts counts() const { return stages_.counts(); }
   // Called now and then during run_frame with the frame's polygons done and
   // their total (a progress line).
   void on_progress(std::function<void(size_t done, size_t total)> report) { report_ = std::move(report); }
 
  private:
+  std::vector<Triangle> run(const WorldFrame& frame, const Window& window, double q, WorldFrame* release);
   FrontEndStages stages_;
   std::function<void(size_t, size_t)> report_;
 };

@@ -117,7 +117,7 @@ bool FrontEndStages::light(size_t i, FrontPolygon& out) {
   Surface corner = surface;  // the surface with a corner's own diffuse colour
   for (size_t k = 0; k < poly.p.size(); ++k) {
     if (!poly.colour.empty()) corner.r = poly.colour[k].r, corner.g = poly.colour[k].g, corner.b = poly.colour[k].b;
-    const LitVertex lit = light_vertex(corner, frame.lights, normals_[i][k], normalized(cam.centre - poly.p[k]));
+    const LitVertex lit = light_vertex(corner, frame.lights, normals_.at(i, k), normalized(cam.centre - poly.p[k]));
     out.v.push_back({poly.p[k], lit.r, lit.g, lit.b, lit.t, false});
   }
   return true;
@@ -262,6 +262,12 @@ bool FrontEndStages::window_select(const SortableTriangle& t) {
 }
 
 void FrontEndStages::sort(std::vector<Triangle>& triangles, const std::vector<uint64_t>& ids) {
+  sort_in_place(triangles, ids);
+  mark_interior_edges(triangles);  // after the sort's own memory has gone
+  counts_.triangles_out += triangles.size();
+}
+
+void FrontEndStages::sort_in_place(std::vector<Triangle>& triangles, const std::vector<uint64_t>& ids) {
   std::vector<SortItem> order;
   order.reserve(triangles.size());
   for (size_t i = 0; i < triangles.size(); ++i) {
@@ -287,8 +293,6 @@ void FrontEndStages::sort(std::vector<Triangle>& triangles, const std::vector<ui
       at = from;
     }
   }
-  mark_interior_edges(triangles);
-  counts_.triangles_out += triangles.size();
 }
 
 FrontendCounts FrontEndStages::counts() const {

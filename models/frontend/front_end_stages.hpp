@@ -148,6 +148,8 @@ class FrontEndStages {
   // Scratch reused polygon after polygon.
   std::vector<Point2> plane_;
   Triangulation triangulation_;
+
+  void sort_in_place(std::vector<Triangle>& triangles, const std::vector<uint64_t>& ids);
 };
 
 }  // namespace girtd

@@ -15,17 +15,20 @@ Vec3 newell_normal(const std::vector<Vec3>& positions, const int* index, size_t 
   return newell_sum(n, [&](size_t i) -> const Vec3& { return positions[size_t(index[i])]; });
 }
 
+Vec3 face_normal(const std::vector<Vec3>& p) { return has_no_area(p) ? Vec3{} : normalized(newell_normal(p)); }
+
 VertexNormals vertex_normals(const std::vector<WorldPolygon>& polygons) {
-  std::vector<size_t> first(polygons.size());
+  std::vector<uint64_t> first(polygons.size());
   std::vector<Vec3> face(polygons.size());
   std::vector<uint32_t> polygon_of;  // per corner
   for (size_t i = 0; i < polygons.size(); ++i) {
     const WorldPolygon& poly = polygons[i];
     first[i] = polygon_of.size();
-    face[i] = has_no_area(poly.p) ? Vec3{} : normalized(newell_normal(poly.p));  // no area: no direction
+    face[i] = face_normal(poly.p);  // no area: no direction
     polygon_of.insert(polygon_of.end(), poly.p.size(), uint32_t(i));
   }
-  std::vector<Vec3> normal(polygon_of.size());
+  std::vector<uint32_t> vertex_of(polygon_of.size());
+  std::vector<Vec3> vertex_normal;
   const auto key_of = [&](size_t c) {
     const WorldPolygon& poly = polygons[polygon_of[c]];
     const Vec3& v = poly.p[c - first[polygon_of[c]]];
@@ -35,11 +38,10 @@ VertexNormals vertex_normals(const std::vector<WorldPolygon>& polygons) {
   for_each_equal_key(polygon_of.size(), key_of, [&](const uint32_t* corner, size_t n) {
     Vec3 sum;
     for (size_t k = 0; k < n; ++k) sum = sum + face[polygon_of[corner[k]]];
-    const Vec3 avg = normalized(sum);
-    // Opposite faces of a sheet cancel: each corner falls back to its polygon's own normal.
-    for (size_t k = 0; k < n; ++k) normal[corner[k]] = length(avg) > 0 ? avg : face[polygon_of[corner[k]]];
+    for (size_t k = 0; k < n; ++k) vertex_of[corner[k]] = uint32_t(vertex_normal.size());
+    vertex_normal.push_back(normalized(sum));
   });
-  return VertexNormals(std::move(first), std::move(normal));
+  return VertexNormals(&polygons, std::move(first), std::move(vertex_of), std::move(vertex_normal));
 }
 
 }  // namespace girtd

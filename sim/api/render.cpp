@@ -109,7 +109,12 @@ LoadedInput load_input(const RenderRequest& a, const Params& params, bool untime
   else in.trace = std::move(t);
   in.prune = plan_pruning(in.polygons ? *in.polygons : in.trace, a.prune);
   if (in.polygons && untimed) {
-    FrontEndRun run = run_front_end(*in.polygons, params, in.prune);
+    // The back end draws the triangles: the polygons' memory goes once the
+    // front end is through with them, unless a polygon-level dump writes
+    // them as the frames go by.
+    const bool dump_polygons = !a.dump.empty() && parse_dump(a.dump).level == TraceLevel::kPolygon;
+    FrontEndRun run = dump_polygons ? run_front_end(*in.polygons, params, in.prune)
+                                    : run_front_end_releasing(*in.polygons, params, in.prune);
     in.trace = std::move(run.triangles);
     in.frontend = run.counts;
   }

@@ -23,6 +23,9 @@ struct FrontEndRun {
 };
 
 FrontEndRun run_front_end(const Trace& polygons, const Params& params, const PrunePlan& prune);
+// The same, each frame's polygons released once the front end is through
+// with them (the frames' settings stay).
+FrontEndRun run_front_end_releasing(Trace& polygons, const Params& params, const PrunePlan& prune);
 
 // The front end's options: the configuration's culling (modeled hardware)
 // and the plan's pruning (the simulator).

@@ -35,20 +35,21 @@ TEST_CASE("cube vertex normals: one surface averages, six surfaces keep face nor
   CHECK(n.z == Approx(0).margin(1e-9));
 
   // One surface: corner (1,1,1) touches +x, +y, +z -> (1,1,1)/sqrt(3) = 0.57735 each.
-  const auto smooth = vertex_normals(cube(true));
-  const Vec3 c = smooth[0][2];  // +x face, vertex (1,1,1)
+  const std::vector<WorldPolygon> one_surface = cube(true), six_surfaces = cube(false);
+  const auto smooth = vertex_normals(one_surface);
+  const Vec3 c = smooth.at(0, 2);  // +x face, vertex (1,1,1)
   CHECK(c.x == Approx(1 / std::sqrt(3.0)));
   CHECK(c.y == Approx(1 / std::sqrt(3.0)));
   CHECK(c.z == Approx(1 / std::sqrt(3.0)));
   // Corner (-1,-1,-1) on the -y face: (-1,-1,-1)/sqrt(3).
-  CHECK(smooth[3][0].x == Approx(-1 / std::sqrt(3.0)));
+  CHECK(smooth.at(3, 0).x == Approx(-1 / std::sqrt(3.0)));
 
   // Six surfaces: the same corner keeps three different normals, one per surface.
-  const auto flat = vertex_normals(cube(false));
-  CHECK(flat[0][2].x == Approx(1));
-  CHECK(flat[0][2].y == Approx(0).margin(1e-9));
-  CHECK(flat[2][2].y == Approx(1));  // +y face, vertex (1,1,1)
-  CHECK(flat[4][2].z == Approx(1));  // +z face, vertex (1,1,1)
+  const auto flat = vertex_normals(six_surfaces);
+  CHECK(flat.at(0, 2).x == Approx(1));
+  CHECK(flat.at(0, 2).y == Approx(0).margin(1e-9));
+  CHECK(flat.at(2, 2).y == Approx(1));  // +y face, vertex (1,1,1)
+  CHECK(flat.at(4, 2).z == Approx(1));  // +z face, vertex (1,1,1)
 }
 
 TEST_CASE("lighting: light straight on and at 60 degrees, CRE interpolation", "[frontend]") {
