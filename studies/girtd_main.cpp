@@ -226,6 +226,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", e.formatted().c_str());
     return 2;
   } catch (const MissingPrerequisite& e) {
+    ProgressLine::get().end();
     std::fprintf(stderr, "girtd: %s\n", e.what());
     return kExitMissingPrerequisite;
   } catch (const std::exception& e) {

@@ -3,13 +3,19 @@
 // The caller may be a SystemC process running on a small coroutine stack that
 // oneTBB cannot see (it sizes its nesting by the thread's real stack); small
 // inputs stay on the caller's thread, where a thread would cost more than it saves.
+// A process forked from one that ran oneTBB (the Python module renders the
+// timed back ends in a forked child) runs everything on its one thread:
+// oneTBB's workers do not survive a fork, and its locks may not either.
 #pragma once
+
+#include <pthread.h>
 
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <exception>
 #include <thread>
@@ -17,6 +23,15 @@
 namespace girtd {
 
 inline constexpr size_t kParallelMinItems = 1 << 16;
+
+// False in a forked child (set by the fork itself, before the child runs).
+inline std::atomic<bool> parallel_allowed{true};
+inline const bool parallel_fork_guard = [] {
+  pthread_atfork(nullptr, nullptr, [] { parallel_allowed.store(false, std::memory_order_relaxed); });
+  return true;
+}();
+
+inline bool go_parallel(size_t n) { return n >= kParallelMinItems && parallel_allowed.load(std::memory_order_relaxed); }
 
 // Runs `work` on a thread of its own and waits; rethrows what it threw.
 template <class Work>
@@ -37,7 +52,7 @@ void on_own_thread(Work&& work) {
 // on each other.
 template <class Body>
 void parallel_for_each_index(size_t n, Body body) {
-  if (n < kParallelMinItems) {
+  if (!go_parallel(n)) {
     for (size_t i = 0; i < n; ++i) body(i);
     return;
   }
@@ -52,7 +67,7 @@ void parallel_for_each_index(size_t n, Body body) {
 // result is then the same however the work is split.
 template <class It, class Less>
 void parallel_sort_total(It first, It last, Less less) {
-  if (size_t(last - first) < kParallelMinItems) return std::sort(first, last, less);
+  if (!go_parallel(size_t(last - first))) return std::sort(first, last, less);
   on_own_thread([&] { tbb::parallel_sort(first, last, less); });
 }
 

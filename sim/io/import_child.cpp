@@ -229,7 +229,7 @@ ImportedModel get_model(Reader& r) {
   const auto garbled = [] { throw std::runtime_error("the importer's answer is garbled"); };
   if (mesh.first.empty() || mesh.first.front() != 0 || mesh.first.back() != mesh.corners.size()) garbled();
   for (size_t i = 0; i + 1 < mesh.first.size(); ++i)
-    if (mesh.first[i + 1] < mesh.first[i] + 3) garbled();  // out of order, or fewer than 3 corners
+    if (mesh.first[i + 1] < mesh.first[i] || mesh.first[i + 1] - mesh.first[i] < 3) garbled();  // out of order, or under 3 corners
   for (int i : mesh.corners)
     if (i < 0 || size_t(i) >= mesh.positions.size()) garbled();
   for (int m : mesh.material)

@@ -203,16 +203,20 @@ class MeshBuilder {
  private:
   void add_mesh(const aiMesh& am, const aiMatrix4x4& m) {
     Mesh& mesh = model_.mesh;
-    std::vector<int> index_of(am.mNumVertices);
-    for (unsigned v = 0; v < am.mNumVertices; ++v) {
+    // Welded when a face first uses it: a vertex no face uses is not a
+    // position of the model (it would move the box lights are aimed by) and
+    // is not checked.
+    std::vector<int> index_of(am.mNumVertices, -1);
+    auto welded = [&](unsigned v) {
+      if (index_of[v] >= 0) return index_of[v];
       const aiVector3D p = m * am.mVertices[v];
       const Vec3 w{p.x, p.y, p.z};
       if (!finite(w)) fail(path_, 0, "vertex " + std::to_string(v) + " has a coordinate that is NaN or infinite");
       auto [it, fresh] = index_.try_emplace(std::make_tuple(same_zero(w.x), same_zero(w.y), same_zero(w.z)),
                                             static_cast<int>(mesh.positions.size()));
       if (fresh) mesh.positions.push_back(w);
-      index_of[v] = it->second;
-    }
+      return index_of[v] = it->second;
+    };
     const unsigned material = am.mMaterialIndex < scene_.mNumMaterials ? am.mMaterialIndex : 0;
     const int key = material_key(material);  // the same for every face of the mesh
     const Surface surface = material < look_.surfaces().size() && look_.surfaces()[material]
@@ -251,7 +255,7 @@ class MeshBuilder {
           const aiColor4D vc = am.mColors[0][v];
           c = {255.0f * unit(vc.r), 255.0f * unit(vc.g), 255.0f * unit(vc.b)};
         }
-        corners.push_back({index_of[v], c});
+        corners.push_back({welded(v), c});
         if (textured) uv.push_back(am.mTextureCoords[0][v]);
       }
       if (textured)

@@ -1,6 +1,7 @@
 #include "io/progress_line.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 
 namespace girtd {
 
@@ -14,6 +15,10 @@ void ProgressLine::start(bool on) {
   drawn_ = false;
   step_.clear();
   run_start_ = Clock::now();
+  const char* after = std::getenv("GIRTD_PROGRESS_AFTER_S");
+  char* end = nullptr;
+  const double s = after ? std::strtod(after, &end) : 1.0;
+  after_s_ = after && end != after && s >= 0 ? s : 1.0;
 }
 
 void ProgressLine::step(const std::string& step, uint64_t done, uint64_t total, const std::string& unit,
@@ -25,7 +30,7 @@ void ProgressLine::step(const std::string& step, uint64_t done, uint64_t total, 
     step_start_ = now;
   }
   const double run_s = std::chrono::duration<double>(now - run_start_).count();
-  if (run_s < 1.0 || (drawn_ && now - last_draw_ < std::chrono::milliseconds(200))) return;
+  if (run_s < after_s_ || (drawn_ && now - last_draw_ < std::chrono::milliseconds(200))) return;
   last_draw_ = now;
   const double share = total ? double(done) / double(total) : 0.0;
   const double step_s = std::chrono::duration<double>(now - step_start_).count();

@@ -1,7 +1,8 @@
 // The one progress line a run prints on stderr (a terminal only): the step
 // it is in (reading the model, the front end, the back end's frames or
 // triangles), how far, and the time that step has left at its pace; shown
-// once the run has taken a second, redrawn at most 5 times a second, ended
+// once the run has taken a second (GIRTD_PROGRESS_AFTER_S=SECONDS in the
+// environment sets another delay), redrawn at most 5 times a second, ended
 // by a newline before anything else is printed. Process-wide, as the steps
 // it follows belong to different layers of one run.
 #pragma once
@@ -31,6 +32,7 @@ class ProgressLine {
  private:
   using Clock = std::chrono::steady_clock;
   bool on_ = false, drawn_ = false;
+  double after_s_ = 1.0;
   Clock::time_point run_start_, step_start_, last_draw_;
   std::string step_;
 };

@@ -84,6 +84,10 @@ int run_bench(const BenchArgs& a) {
   if (a.scale_only) {
     if (!config.empty()) throw InputError("--config", 0, "bench --scale renders with the default configuration");
     const ScaleBench sb = run_scale_bench(out_dir, a.scale_sizes, a.scale_runs);
+    if (sb.failures) {  // nothing half-measured for docs --record to take
+      std::printf("%d failure(s); nothing written\n", sb.failures);
+      return 1;
+    }
     OutputSet files(out_dir);
     files.add_text("scale.json", nlohmann::json{{"measured_on", measured_on()}, {"scale", sb.rows}}.dump(2) + "\n");
     files.add_text("scale.md", "# girtd bench --scale\n" + sb.markdown);

@@ -1,10 +1,14 @@
 #include "bench/scale_bench.hpp"
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <utility>
 
 #include "bench/bench_stats.hpp"
 #include "io/json_file.hpp"
@@ -69,7 +73,7 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
   const char* driver = std::getenv("GIRTD_DRIVER");
   const std::string render = driver && *driver ? driver : self;
   auto fail = [&b](const std::string& what) {
-    std::fprintf(stderr, "bench: %s\n", what.c_str());
+    std::fprintf(stderr, "\nbench: %s\n", what.c_str());
     ++b.failures;
     b.markdown += "\n" + what + "\n";
   };
@@ -85,10 +89,14 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
     Sample assimp, golden, approx;
     std::vector<double> time_ratio, memory_ratio, approx_ratio;
     long triangles = 0;
-    const std::string log = dir + "/runs.log";
+    const std::string log = dir + "/runs.log", counted = dir + "/assimp_faces.txt";
+    const bool tty = isatty(STDERR_FILENO);
     for (int r = 0; r < runs; ++r) {
-      std::fprintf(stderr, "\r[girtd] bench --scale: %ld triangles, run %d/%d   ", n, r + 1, runs);
-      const ProcessUsage a = run_process_measured({yardstick, mesh}, log);
+      if (tty) std::fprintf(stderr, "\r[girtd] bench --scale: %ld triangles, run %d/%d   ", n, r + 1, runs);
+      fs::remove(counted);
+      const ProcessUsage a = run_process_measured({yardstick, mesh}, counted);
+      long assimp_faces = -1;
+      if (std::ifstream in(counted); !(in >> assimp_faces)) assimp_faces = -1;
       double t[2], m[2];
       bool ok = a.exit_code == 0;
       for (int k = 0; k < 2 && ok; ++k) {
@@ -100,6 +108,11 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
         if (!ok) break;
         const nlohmann::json report = read_json_file(out + "/report.json");
         triangles = report.at("frontend").at("polygons").get<long>();
+        if (triangles != assimp_faces) {  // the same file read alike, or the comparison means nothing
+          fail(mesh + ": " + backend + " read " + std::to_string(triangles) + " polygons, assimp alone " +
+               std::to_string(assimp_faces));
+          return b;
+        }
         Sample& s = k == 0 ? golden : approx;
         s.elapsed.push_back(u.elapsed_s);
         s.peak.push_back(u.peak_rss_mb);
@@ -117,7 +130,7 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
       memory_ratio.push_back(m[0] / a.peak_rss_mb);
       approx_ratio.push_back(t[1] / t[0]);
     }
-    std::fprintf(stderr, "\n");
+    if (tty) std::fprintf(stderr, "\n");
     tris.push_back(double(triangles));
     assimp_t.push_back(median(assimp.elapsed));
     assimp_m.push_back(median(assimp.peak));
@@ -139,18 +152,32 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
                       {"golden_over_assimp_memory", last_memory_ratio},
                       {"approx_over_golden_time", last_approx_ratio}});
   }
-  const nlohmann::json fits = {{"golden_time", exponent(tris, golden_t)}, {"golden_memory", exponent(tris, golden_m)},
-                               {"approx_time", exponent(tris, approx_t)}, {"approx_memory", exponent(tris, approx_m)},
-                               {"assimp_time", exponent(tris, assimp_t)}, {"assimp_memory", exponent(tris, assimp_m)}};
-  b.rows = {{"sizes", b.rows}, {"exponents", fits}, {"runs", runs}, {"timed", driver && *driver ? "tools/girtd render" : "girtd render"}};
+  // Over every size, and over the two largest alone: the fixed costs of a
+  // run (start-up, the driver's build check) weigh on the small sizes and
+  // flatten the fit over all of them.
+  auto fit = [&](const std::vector<double>& y, bool last_two) -> nlohmann::json {
+    if (tris.size() < 2) return nullptr;
+    const size_t from = last_two ? tris.size() - 2 : 0;
+    return exponent({tris.begin() + long(from), tris.end()}, {y.begin() + long(from), y.end()});
+  };
+  nlohmann::json fits, largest;
+  for (const auto& [name, y] : std::vector<std::pair<std::string, const std::vector<double>*>>{
+           {"golden_time", &golden_t}, {"golden_memory", &golden_m}, {"approx_time", &approx_t},
+           {"approx_memory", &approx_m}, {"assimp_time", &assimp_t}, {"assimp_memory", &assimp_m}}) {
+    fits[name] = fit(*y, false);
+    largest[name] = fit(*y, true);
+  }
+  b.rows = {{"sizes", b.rows}, {"exponents", fits}, {"exponents_two_largest", largest}, {"runs", runs},
+            {"timed", driver && *driver ? "tools/girtd render" : "girtd render"}};
 
   std::string& md = b.markdown;
   md += "\n## The simulator at scale: generated UV spheres, " + std::to_string(runs) + " runs each\n\n";
   md += std::string("Each run, in turn: assimp's import alone (`girtd_assimp_import`: `ReadFile` with no post-processing), then `") +
         (driver && *driver ? "tools/girtd render" : "girtd render") +
         " FILE --backend golden`, then the same on approx, each in its own process. Elapsed: start to exit; peak: "
-        "the largest process's resident memory (the simulator or its import child). Medians over the runs; the "
-        "ratios are the medians of each run's ratio.\n\n";
+        "the largest process's resident memory (the simulator or its import child; the child has ended before the "
+        "simulator's own peak, after the import). Medians over the runs; the ratios are the medians of each run's "
+        "ratio.\n\n";
   md += "| triangles | OBJ MB | assimp s | assimp MB | golden s | golden MB | golden wall_s | golden us/triangle | approx s | "
         "approx MB | approx wall_s | golden / assimp time | golden / assimp memory | approx / golden time |\n";
   md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -165,17 +192,21 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
           cell("%.2f", r["golden_over_assimp_memory"].get<double>()) + " | " +
           cell("%.2f", r["approx_over_golden_time"].get<double>()) + " |\n";
   }
+  double worst = 0;
   if (tris.size() >= 2) {
-    md += "\nGrowth exponents (least squares of log cost against log triangles over the sizes): golden time " +
-          cell("%.2f", fits["golden_time"].get<double>()) + ", memory " + cell("%.2f", fits["golden_memory"].get<double>()) +
-          "; approx time " + cell("%.2f", fits["approx_time"].get<double>()) + ", memory " +
-          cell("%.2f", fits["approx_memory"].get<double>()) + "; assimp time " +
-          cell("%.2f", fits["assimp_time"].get<double>()) + ", memory " + cell("%.2f", fits["assimp_memory"].get<double>()) +
-          ".\n";
+    md += "\nGrowth exponents (the slope of log cost against log triangles), least squares over every size / between "
+          "the two largest:\n\n| | golden time | golden memory | approx time | approx memory | assimp time | assimp memory |\n"
+          "|---|---|---|---|---|---|---|\n";
+    for (const auto* f : {&fits, &largest}) {
+      md += f == &fits ? "| every size |" : "| two largest |";
+      for (const char* k : {"golden_time", "golden_memory", "approx_time", "approx_memory", "assimp_time", "assimp_memory"}) {
+        md += " " + cell("%.2f", (*f)[k].get<double>()) + " |";
+        if (std::string(k).rfind("assimp", 0) != 0) worst = std::max(worst, (*f)[k].get<double>());
+      }
+      md += "\n";
+    }
   }
   if (!tris.empty()) {
-    const double worst = std::max({fits["golden_time"].get<double>(), fits["golden_memory"].get<double>(),
-                                   fits["approx_time"].get<double>(), fits["approx_memory"].get<double>()});
     md += "\nAt " + std::to_string(long(tris.back())) + " triangles, against the bars (met: the median at least 10 % past the bar):\n\n";
     md += "| bar | measured | verdict |\n|---|---|---|\n";
     md += "| golden time at most " + cell("%.0f", kGoldenOverAssimpTime) + "x assimp's | " + cell("%.2fx", last_time_ratio) +
@@ -185,7 +216,8 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
     md += "| approx time at most " + cell("%.0f", kApproxOverGolden) + "x golden's | " + cell("%.2fx", last_approx_ratio) +
           " | " + verdict(last_approx_ratio, kApproxOverGolden) + " |\n";
     if (tris.size() >= 2)
-      md += "| growth exponents at most " + cell("%.1f", kMaxExponent) + " | " + cell("%.2f", worst) + " (the largest) | " +
+      md += "| growth exponents at most " + cell("%.1f", kMaxExponent) + " | " + cell("%.2f", worst) +
+            " (the largest of golden's and approx's, either fit) | " +
             (worst <= kMaxExponent ? "met" : "not met") + " |\n";
   }
   return b;
