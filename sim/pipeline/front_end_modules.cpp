@@ -82,8 +82,9 @@ void PipelineElaboration::build_from_polygons(const Trace& polygons) {
       },
       [this, &proj](size_t, Work<ScreenPolygon>& w) {
         const DepthMap depth = proj.depth_map();
+        w.reserve(w.size() + held_.size());
         for (const FrontPolygon& p : held_) w.push_back({projection_ops(p.v.size()).flops(), proj.project(p, depth)});
-        held_.clear();
+        std::vector<FrontPolygon>().swap(held_);
       });
 
   FrontEndStages& tri = front_end_instance();
@@ -110,26 +111,24 @@ void PipelineElaboration::build_from_polygons(const Trace& polygons) {
   FrontEndStages& sorter = front_end_instance();
   auto& sort_out = stage<SortableTriangle, Triangle>(
       "depth_sort", sel_out,
-      [this](size_t, const SortableTriangle& t, Work<Triangle>&) { to_sort_.push_back(t); },
+      [this](size_t, const SortableTriangle& t, Work<Triangle>&) {
+        to_sort_.push_back(t.ft.tri);
+        to_sort_ids_.push_back(t.id);
+      },
       [this, &sorter](size_t frame, Work<Triangle>&) {
         begin(sorter, frame);
         to_sort_.clear();
+        to_sort_ids_.clear();
       },
       [this, &sorter](size_t, Work<Triangle>& w) {
         const uint64_t before = sorter.counts().depth_sort_comparisons;
-        std::vector<Triangle> sorted;
-        std::vector<uint64_t> ids;
-        sorted.reserve(to_sort_.size());
-        ids.reserve(to_sort_.size());
-        for (const SortableTriangle& t : to_sort_) {
-          sorted.push_back(t.ft.tri);
-          ids.push_back(t.id);
-        }
-        sorter.sort(sorted, ids);
+        sorter.sort(to_sort_, to_sort_ids_);  // in place
+        w.reserve(w.size() + 1 + to_sort_.size());
         w.push_back({depth_sort_ops(to_sort_.size(), sorter.counts().depth_sort_comparisons - before).flops(),
                      std::nullopt});
-        for (const Triangle& t : sorted) w.push_back({0, t});
-        to_sort_.clear();
+        for (const Triangle& t : to_sort_) w.push_back({0, t});
+        std::vector<Triangle>().swap(to_sort_);
+        std::vector<uint64_t>().swap(to_sort_ids_);
       });
   build_back(preparer(sort_out));
 }

@@ -124,7 +124,8 @@ class PipelineElaboration {
   std::vector<std::vector<DdaParams>> dda_sets_;
   std::vector<std::unique_ptr<FrontEndStages>> fe_;
   std::vector<FrontPolygon> held_;
-  std::vector<SortableTriangle> to_sort_;
+  std::vector<Triangle> to_sort_;     // the depth sort's frame, and each triangle's id
+  std::vector<uint64_t> to_sort_ids_;
   std::unique_ptr<DdaPreparer> preparer_;
   std::vector<std::shared_ptr<void>> owned_;
   std::vector<std::unique_ptr<sc_core::sc_module>> modules_;
