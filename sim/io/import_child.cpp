@@ -57,13 +57,6 @@ class Writer {
     put(uint64_t(v.size()));
     if (!v.empty()) out_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
   }
-  // Points as their coordinates (GLM's vector is not trivially copyable,
-  // though laid out as three doubles).
-  void put_points(const std::vector<Vec3>& v) {
-    static_assert(sizeof(Vec3) == 3 * sizeof(double) && std::is_standard_layout_v<Vec3>);
-    put(uint64_t(v.size()));
-    if (!v.empty()) out_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(Vec3));
-  }
   void reserve(size_t bytes) { out_.reserve(bytes); }
   const std::string& bytes() const { return out_; }
 
@@ -97,15 +90,6 @@ class Reader {
     if (v.empty()) return;  // no data() to copy to
     std::memcpy(v.data(), in_.data() + at_, v.size() * sizeof(T));
     at_ += v.size() * sizeof(T);
-  }
-  void get_points(std::vector<Vec3>& v) {
-    v.resize(get_count(sizeof(Vec3)));
-    for (Vec3& p : v) {
-      double xyz[3];
-      std::memcpy(xyz, in_.data() + at_, sizeof xyz);
-      at_ += sizeof xyz;
-      p = {xyz[0], xyz[1], xyz[2]};
-    }
   }
   std::string get_text() {
     const uint64_t n = get<uint64_t>();
@@ -158,7 +142,8 @@ void put_model(Writer& w, const ImportedModel& model) {
   const Mesh& mesh = model.mesh;
   w.reserve(mesh.positions.size() * sizeof(Vec3) + mesh.corners.size() * (sizeof(int) + sizeof(CornerColour)) +
             mesh.first.size() * sizeof(uint64_t) + mesh.material.size() * sizeof(int) + (1 << 16));
-  w.put_points(mesh.positions);
+  w.put(uint64_t(mesh.positions.size()));  // GLM's vector is not trivially copyable: point by point
+  for (const Vec3& p : mesh.positions) put_vec(w, p);
   w.put_array(mesh.corners);
   w.put_array(mesh.first);
   w.put_array(mesh.material);
@@ -192,7 +177,8 @@ void put_model(Writer& w, const ImportedModel& model) {
 ImportedModel get_model(Reader& r) {
   ImportedModel model;
   Mesh& mesh = model.mesh;
-  r.get_points(mesh.positions);
+  mesh.positions.resize(r.get_count(3 * sizeof(double)));
+  for (Vec3& p : mesh.positions) p = get_vec(r);
   r.get_array(mesh.corners);
   r.get_array(mesh.first);
   r.get_array(mesh.material);

@@ -1,6 +1,5 @@
 #include "io/model_import.hpp"
 
-#include <absl/container/flat_hash_map.h>
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
@@ -20,9 +19,9 @@
 #include <set>
 #include <tuple>
 
-#include "common/equal_keys.hpp"
 #include "common/input_error.hpp"
 #include "frontend/polygon_shape.hpp"
+#include "frontend/position_weld.hpp"
 #include "io/assimp_messages.hpp"
 #include "io/import_child.hpp"
 #include "io/model_precheck.hpp"
@@ -212,10 +211,7 @@ class MeshBuilder {
       const aiVector3D p = m * am.mVertices[v];
       const Vec3 w{p.x, p.y, p.z};
       if (!finite(w)) fail(path_, 0, "vertex " + std::to_string(v) + " has a coordinate that is NaN or infinite");
-      auto [it, fresh] = index_.try_emplace(std::make_tuple(same_zero(w.x), same_zero(w.y), same_zero(w.z)),
-                                            static_cast<int>(mesh.positions.size()));
-      if (fresh) mesh.positions.push_back(w);
-      return index_of[v] = it->second;
+      return index_of[v] = weld_.index_of(w, mesh.positions);
     };
     const unsigned material = am.mMaterialIndex < scene_.mNumMaterials ? am.mMaterialIndex : 0;
     const int key = material_key(material);  // the same for every face of the mesh
@@ -360,8 +356,7 @@ class MeshBuilder {
   uint64_t faces_read_ = 0;
   uint64_t faces_seen_ = 0, faces_in_file_ = 0;  // for the progress line (a mesh placed twice counts twice)
   bool any_corner_colour_ = false;
-  // Vertices weld by position (-0 and 0 alike), across the file's meshes.
-  absl::flat_hash_map<std::tuple<double, double, double>, int> index_;
+  PositionWeld weld_;  // across the file's meshes
   std::map<std::string, aiMatrix4x4> node_transform_;
 };
 

@@ -11,14 +11,13 @@
 #include <sstream>
 #include <tuple>
 
-#include <absl/container/flat_hash_map.h>
 #include <nlohmann/json.hpp>
 
-#include "common/equal_keys.hpp"
 #include "common/file_text.hpp"
 #include "common/input_error.hpp"
 #include "common/json_text.hpp"
 #include "frontend/polygon_shape.hpp"
+#include "frontend/position_weld.hpp"
 #include "frontend/rotation.hpp"
 #include "frontend/surface_groups.hpp"
 #include "frontend/view_transform.hpp"
@@ -313,14 +312,8 @@ class SceneReader {
     const size_t n = at(ptr / "vertices").size();
     if (n > size_t(std::numeric_limits<int>::max())) fail(ptr / "vertices", "too many vertices");
     std::vector<int> index_of(n);
-    absl::flat_hash_map<std::tuple<double, double, double>, int> merged;
-    for (size_t i = 0; i < n; ++i) {
-      const Vec3 p = vec3(ptr / "vertices" / i);
-      auto [it, fresh] = merged.try_emplace(std::make_tuple(same_zero(p.x), same_zero(p.y), same_zero(p.z)),
-                                            static_cast<int>(m->positions.size()));
-      if (fresh) m->positions.push_back(p);
-      index_of[i] = it->second;
-    }
+    PositionWeld weld;
+    for (size_t i = 0; i < n; ++i) index_of[i] = weld.index_of(vec3(ptr / "vertices" / i), m->positions);
     const json& polys = at(ptr / "polygons");
     if (polys.size() > kMaxModelPolygons) fail(ptr / "polygons", "more than " + std::to_string(kMaxModelPolygons) + " polygons");
     for (size_t i = 0; i < polys.size(); ++i) {

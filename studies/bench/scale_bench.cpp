@@ -13,6 +13,7 @@
 #include "bench/bench_stats.hpp"
 #include "io/json_file.hpp"
 #include "io/subprocess.hpp"
+#include "io/text_format.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -46,12 +47,6 @@ double exponent(const std::vector<double>& x, const std::vector<double>& y) {
 
 const char* verdict(double ratio, double bar) {
   return ratio <= kMargin * bar ? "met" : ratio <= bar ? "within the bar, not 10 % past it" : "not met";
-}
-
-std::string cell(const char* fmt, double v) {
-  char s[64];
-  std::snprintf(s, sizeof s, fmt, v);
-  return s;
 }
 
 }  // namespace
@@ -183,14 +178,14 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
   md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (size_t i = 0; i < tris.size(); ++i) {
     const nlohmann::json& r = b.rows["sizes"][i];
-    md += "| " + std::to_string(long(tris[i])) + " | " + cell("%.1f", r["mesh_mb"].get<double>()) + " | " +
-          cell("%.2f", assimp_t[i]) + " | " + cell("%.0f", assimp_m[i]) + " | " + cell("%.2f", golden_t[i]) + " | " +
-          cell("%.0f", golden_m[i]) + " | " + cell("%.2f", r["golden"]["wall_s"].get<double>()) + " | " +
-          cell("%.2f", 1e6 * golden_t[i] / tris[i]) + " | " + cell("%.2f", approx_t[i]) + " | " +
-          cell("%.0f", approx_m[i]) + " | " + cell("%.2f", r["approx"]["wall_s"].get<double>()) + " | " +
-          cell("%.2f", r["golden_over_assimp_time"].get<double>()) + " | " +
-          cell("%.2f", r["golden_over_assimp_memory"].get<double>()) + " | " +
-          cell("%.2f", r["approx_over_golden_time"].get<double>()) + " |\n";
+    md += "| " + std::to_string(long(tris[i])) + " | " + format_numbers("%.1f", r["mesh_mb"].get<double>()) + " | " +
+          format_numbers("%.2f", assimp_t[i]) + " | " + format_numbers("%.0f", assimp_m[i]) + " | " + format_numbers("%.2f", golden_t[i]) + " | " +
+          format_numbers("%.0f", golden_m[i]) + " | " + format_numbers("%.2f", r["golden"]["wall_s"].get<double>()) + " | " +
+          format_numbers("%.2f", 1e6 * golden_t[i] / tris[i]) + " | " + format_numbers("%.2f", approx_t[i]) + " | " +
+          format_numbers("%.0f", approx_m[i]) + " | " + format_numbers("%.2f", r["approx"]["wall_s"].get<double>()) + " | " +
+          format_numbers("%.2f", r["golden_over_assimp_time"].get<double>()) + " | " +
+          format_numbers("%.2f", r["golden_over_assimp_memory"].get<double>()) + " | " +
+          format_numbers("%.2f", r["approx_over_golden_time"].get<double>()) + " |\n";
   }
   double worst = 0;
   if (tris.size() >= 2) {
@@ -200,7 +195,7 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
     for (const auto* f : {&fits, &largest}) {
       md += f == &fits ? "| every size |" : "| two largest |";
       for (const char* k : {"golden_time", "golden_memory", "approx_time", "approx_memory", "assimp_time", "assimp_memory"}) {
-        md += " " + cell("%.2f", (*f)[k].get<double>()) + " |";
+        md += " " + format_numbers("%.2f", (*f)[k].get<double>()) + " |";
         if (std::string(k).rfind("assimp", 0) != 0) worst = std::max(worst, (*f)[k].get<double>());
       }
       md += "\n";
@@ -209,14 +204,14 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
   if (!tris.empty()) {
     md += "\nAt " + std::to_string(long(tris.back())) + " triangles, against the bars (met: the median at least 10 % past the bar):\n\n";
     md += "| bar | measured | verdict |\n|---|---|---|\n";
-    md += "| golden time at most " + cell("%.0f", kGoldenOverAssimpTime) + "x assimp's | " + cell("%.2fx", last_time_ratio) +
+    md += "| golden time at most " + format_numbers("%.0f", kGoldenOverAssimpTime) + "x assimp's | " + format_numbers("%.2fx", last_time_ratio) +
           " | " + verdict(last_time_ratio, kGoldenOverAssimpTime) + " |\n";
-    md += "| golden peak memory at most " + cell("%.0f", kGoldenOverAssimpMemory) + "x assimp's | " +
-          cell("%.2fx", last_memory_ratio) + " | " + verdict(last_memory_ratio, kGoldenOverAssimpMemory) + " |\n";
-    md += "| approx time at most " + cell("%.0f", kApproxOverGolden) + "x golden's | " + cell("%.2fx", last_approx_ratio) +
+    md += "| golden peak memory at most " + format_numbers("%.0f", kGoldenOverAssimpMemory) + "x assimp's | " +
+          format_numbers("%.2fx", last_memory_ratio) + " | " + verdict(last_memory_ratio, kGoldenOverAssimpMemory) + " |\n";
+    md += "| approx time at most " + format_numbers("%.0f", kApproxOverGolden) + "x golden's | " + format_numbers("%.2fx", last_approx_ratio) +
           " | " + verdict(last_approx_ratio, kApproxOverGolden) + " |\n";
     if (tris.size() >= 2)
-      md += "| growth exponents at most " + cell("%.1f", kMaxExponent) + " | " + cell("%.2f", worst) +
+      md += "| growth exponents at most " + format_numbers("%.1f", kMaxExponent) + " | " + format_numbers("%.2f", worst) +
             " (the largest of golden's and approx's, either fit) | " +
             (worst <= kMaxExponent ? "met" : "not met") + " |\n";
   }
