@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,7 +37,10 @@ struct RenderRequest {
   std::string level;                 // a trace without a header: its level
   std::string camera;                // a model file's camera by name ("": the file's first, else auto)
   int repeat = 1;                    // a one-frame input drawn N times
-  bool keep_all_frames = false;      // RenderResult::per_frame
+  bool keep_all_frames = false;      // RenderResult::per_frame (every frame held to the end)
+  // Each frame's picture as its swap ends it, numbered from 0, nothing held
+  // (what `girtd render --frames all` writes as the run goes).
+  std::function<void(size_t frame, const RgbImage& picture)> on_frame;
   bool prune = true;                 // leave out what cannot change the picture
   std::optional<double> aa;          // dda.q_override
   std::optional<double> sample_timing;

@@ -82,43 +82,15 @@ Params request_params(const RenderRequest& a) {
   return params;
 }
 
-// What a render draws: the triangle- or DDA-level trace, and for models,
-// scenes and polygon traces the polygon-level trace it came from.
-struct LoadedInput {
-  Trace trace;
-  std::optional<Trace> polygons;
-  std::optional<FrontendCounts> frontend;
-  PrunePlan prune;  // decided on the input as read
-};
-
-// `untimed`: golden and reference draw triangles, so the front end runs here;
-// the timed back ends run it as their own stages.
-LoadedInput load_input(const RenderRequest& a, const Params& params, bool untimed) {
+// What a render draws, taken a frame at a time: a trace, or for models and
+// scenes polygon-level input (the front end runs in the back end's loop).
+FrameSource open_request_input(const RenderRequest& a, const Params& params) {
   std::optional<TraceLevel> level;
   if (!a.level.empty()) level = parse_level(a.level, "--level", 0);
-  LoadedInput in;
-  Trace t = a.scene ? read_scene_document(*a.scene, a.input, params, a.camera)
-                    : read_input(a.input, level, params, a.camera);
-  if (a.repeat > 1) {  // a static input as N frames: the pipeline overlaps them
-    if (t.frames.size() != 1)
-      throw InputError("--repeat", 0, a.input + " has " + std::to_string(t.frames.size()) +
-                                          " frames: --repeat draws a one-frame input N times");
-    t.frames.resize(size_t(a.repeat), t.frames.front());
-  }
-  if (t.level == TraceLevel::kPolygon) in.polygons = std::move(t);
-  else in.trace = std::move(t);
-  in.prune = plan_pruning(in.polygons ? *in.polygons : in.trace, a.prune);
-  if (in.polygons && untimed) {
-    // The back end draws the triangles: the polygons' memory goes once the
-    // front end is through with them, unless a polygon-level dump writes
-    // them as the frames go by.
-    const bool dump_polygons = !a.dump.empty() && parse_dump(a.dump).level == TraceLevel::kPolygon;
-    FrontEndRun run = dump_polygons ? run_front_end(*in.polygons, params, in.prune)
-                                    : run_front_end_releasing(*in.polygons, params, in.prune);
-    in.trace = std::move(run.triangles);
-    in.frontend = run.counts;
-  }
-  return in;
+  FrameSource input = a.scene ? open_scene_document(*a.scene, a.input, params, a.camera)
+                              : open_input(a.input, level, params, a.camera);
+  input.repeat(size_t(a.repeat));  // a static input as N frames: the pipeline overlaps them
+  return input;
 }
 
 std::string sampling_warning(const std::string& input, const SamplingStats& m, const Params& params) {
@@ -153,8 +125,8 @@ RenderResult render(const RenderRequest& a) {
                          "): render it with tools/girtd, which builds that RTL variant");
   const uint64_t passes_before = front_end_passes();
   ProgressLine::get().start(a.progress);
-  const LoadedInput input = load_input(a, params, !entry.timed());
-  const std::vector<std::string>& input_warnings = input.polygons ? input.polygons->warnings : input.trace.warnings;
+  FrameSource input = open_request_input(a, params);
+  const std::vector<std::string> input_warnings = input.warnings();
   auto warn = [&](const std::string& w) {
     if (!a.print_warnings) return;
     ProgressLine::get().end();
@@ -165,18 +137,12 @@ RenderResult render(const RenderRequest& a) {
   RenderOptions opt;
   opt.keep_all_frames = a.keep_all_frames;
   if (!a.dump.empty()) opt.dump = parse_dump(a.dump);
+  opt.on_frame = a.on_frame;
   opt.progress = a.progress;
-  if (input.polygons) opt.polygon_source = &*input.polygons;
   opt.wave = wave;
-  opt.prune = input.prune;
+  opt.prune = plan_pruning(input.level(), a.prune);
   opt.sample_timing = a.sample_timing;
-  RenderOutput out;
-  if (entry.timed()) {
-    out = run_pipeline(entry, input.polygons ? *input.polygons : input.trace, params, opt);
-  } else {
-    out = render_trace(entry, input.trace, params, opt);
-    out.stats.frontend = input.frontend;
-  }
+  RenderOutput out = entry.timed() ? run_pipeline(entry, input, params, opt) : render_frames(entry, input, params, opt);
   if (out.problem) {  // found at the end of the run: not thrown (see RenderResult::problem)
     RenderResult failed;
     failed.problem = out.problem;
@@ -187,7 +153,7 @@ RenderResult render(const RenderRequest& a) {
   ctx.backend = entry.name;
   ctx.capabilities = entry.capabilities;
   ctx.input = a.input;
-  ctx.level = level_name(input.polygons ? TraceLevel::kPolygon : input.trace.level);
+  ctx.level = level_name(input.level());
   ctx.image_sha256 = sha256_hex(out.shown.rgb);
   for (const std::string& w : input_warnings) ctx.warnings.push_back(one_line(w));
   std::vector<std::optional<std::string>> run_warnings = {

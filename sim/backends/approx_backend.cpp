@@ -27,7 +27,7 @@ class ApproxBackend : public HadBackend, public ModeledTime {
     dda_.skip_unreachable_wraps(plan.unreachable_wraps);
     dda_.compute_spans(plan.dda_spans);
   }
-  void begin(const Trace& trace) override { require_pipeline_input(trace); }
+  void begin(const FrameSource& input) override { require_pipeline_input(input); }
   ModeledTime* modeled_time() override { return this; }
   uint64_t ready_tick() override { return timing_.dda_ready_tick(); }
   void idle_until(uint64_t tick) override { timing_.idle_until(tick); }

@@ -11,17 +11,17 @@ void Backend::draw(const Triangle&) {
   throw std::logic_error("this back end draws DDA parameter sets: the preparer runs before it");
 }
 
-void require_hardware_q(const Trace& trace) {
-  for (const TraceFrame& f : trace.frames)
-    if (!is_hardware_q(f.settings.q))
-      throw InputError(trace.path, f.settings.q_line,
+void require_hardware_q(const FrameSource& input) {
+  for (const FrameSettings& s : input.settings())
+    if (!is_hardware_q(s.q))
+      throw InputError(input.path(), s.q_line,
                        "Q must be 0 or a power of two 1/16..8 for the hardware back ends (Norm is a shift)");
 }
 
-void require_pipeline_input(const Trace& trace) {
-  if (trace.level == TraceLevel::kThesis)
-    throw InputError(trace.path, 0, "a thesis-level trace runs the appendix program: use --backend golden");
-  require_hardware_q(trace);
+void require_pipeline_input(const FrameSource& input) {
+  if (input.level() == TraceLevel::kThesis)
+    throw InputError(input.path(), 0, "a thesis-level trace runs the appendix program: use --backend golden");
+  require_hardware_q(input);
 }
 
 }  // namespace girtd

@@ -16,16 +16,17 @@
 #include "common/types.hpp"
 #include "dda/dda_params.hpp"
 #include "io/png_io.hpp"
-#include "io/trace.hpp"
+#include "io/frame_source.hpp"
 
 namespace girtd {
 
 class Backend {
  public:
   virtual ~Backend() = default;
-  // Before the first frame: throws InputError for input this back end cannot
-  // take, and sets itself up for the trace's level.
-  virtual void begin(const Trace& trace) = 0;
+  // Before the first frame (no frame taken yet): throws InputError for input
+  // this back end cannot take, and sets itself up for its level. Polygon
+  // input reaches it as the front end's triangles.
+  virtual void begin(const FrameSource& input) = 0;
   // What the simulator may leave out (backends/prune_plan.hpp), before begin().
   virtual void prune(const PrunePlan& plan) { (void)plan; }
   // --dump dda: hands every DDA parameter set the back end draws to `tap`
@@ -53,9 +54,9 @@ class Backend {
 
 // The hardware's Norm is a shift: every frame's Q must be 0 or a power of
 // two 1/16..8 (InputError at the line that set it).
-void require_hardware_q(const Trace& trace);
+void require_hardware_q(const FrameSource& input);
 // What the pipeline's back ends take: that Q, and no thesis-level trace (it
 // runs the appendix program, which only an untimed back end has).
-void require_pipeline_input(const Trace& trace);
+void require_pipeline_input(const FrameSource& input);
 
 }  // namespace girtd

@@ -21,15 +21,16 @@ struct DumpRequest {
 
 class DumpTap {
  public:
-  // `input`: the render's input (a polygon-level trace for models and scenes).
-  DumpTap(const DumpRequest& req, const Trace& input, const Params& params) : level_(req.level) {
-    if (input.level == TraceLevel::kThesis)
+  // `input`: the render's input (polygon level for models and scenes), read from `input_path`.
+  DumpTap(const DumpRequest& req, TraceLevel input, const std::string& input_path, const Params& params)
+      : level_(req.level) {
+    if (input == TraceLevel::kThesis)
       throw InputError(req.path, 0, "a thesis trace runs the appendix program whole: it has no stage boundary to dump");
-    if (input.level == TraceLevel::kDda && level_ == TraceLevel::kTriangle)
+    if (input == TraceLevel::kDda && level_ == TraceLevel::kTriangle)
       throw InputError(req.path, 0, "cannot dump triangles from a DDA-level trace (the preparer's input is gone)");
-    if (level_ == TraceLevel::kPolygon && input.level != TraceLevel::kPolygon)
+    if (level_ == TraceLevel::kPolygon && input != TraceLevel::kPolygon)
       throw InputError(req.path, 0, "cannot dump polygons: the input entered below the front end");
-    writer_ = std::make_unique<TraceWriter>(req.path, level_, params, "dumped by girtd render from " + input.path);
+    writer_ = std::make_unique<TraceWriter>(req.path, level_, params, "dumped by girtd render from " + input_path);
   }
   TraceLevel level() const { return level_; }
   void begin_frame(const FrameSettings& s) { writer_->begin_frame(s); }

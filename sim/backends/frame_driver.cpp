@@ -6,13 +6,14 @@
 
 namespace girtd {
 
-FrameDriver::FrameDriver(std::string backend, const Trace& input, const Params& p, const RenderOptions& opt)
+FrameDriver::FrameDriver(std::string backend, const FrameSource& input, const Params& p, const RenderOptions& opt)
     : backend_(std::move(backend)),
-      frames_(input.frames.size()),
+      frames_(input.frames()),
       keep_frames_(opt.keep_all_frames),
       show_progress_(opt.progress),
+      on_frame_(opt.on_frame),
       t0_(std::chrono::steady_clock::now()) {
-  if (opt.dump) tap_ = std::make_unique<DumpTap>(*opt.dump, input, p);
+  if (opt.dump) tap_ = std::make_unique<DumpTap>(*opt.dump, input.level(), input.path(), p);
 }
 
 void FrameDriver::start() { t0_ = std::chrono::steady_clock::now(); }
@@ -22,7 +23,11 @@ double FrameDriver::wall_s() const {
 }
 
 void FrameDriver::frame_ended(const std::function<RgbImage()>& shown) {
-  if (keep_frames_) kept_.push_back(shown());
+  const size_t frame = ended_++;
+  if (!keep_frames_ && !on_frame_) return;
+  RgbImage picture = shown();
+  if (on_frame_) on_frame_(frame, picture);
+  if (keep_frames_) kept_.push_back(std::move(picture));
 }
 
 void FrameDriver::progress(size_t frame, uint64_t done, uint64_t total, const char* unit, const std::string& detail) {

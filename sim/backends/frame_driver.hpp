@@ -2,7 +2,7 @@
 // the render session for the untimed back ends and the SystemC back-end
 // stage for the timed ones both go through it. It makes and checks the
 // --dump tap before the run and commits it after; takes each frame's end
-// (its picture kept for --frames all); prints the progress line with its
+// (its picture handed on or kept for --frames all); prints the progress line with its
 // ETA on a long run; and keeps the simulation's wall clock.
 #pragma once
 
@@ -17,16 +17,15 @@
 #include "backends/render_session.hpp"
 #include "config/params.hpp"
 #include "io/png_io.hpp"
-#include "io/trace.hpp"
+#include "io/frame_source.hpp"
 
 namespace girtd {
 
 class FrameDriver {
  public:
-  // `input`: what entered the run (for models and scenes, the polygon-level
-  // trace), `frames` of them. Throws InputError for a --dump the input
-  // cannot give.
-  FrameDriver(std::string backend, const Trace& input, const Params& p, const RenderOptions& opt);
+  // `input`: what enters the run (polygon level for models and scenes).
+  // Throws InputError for a --dump the input cannot give.
+  FrameDriver(std::string backend, const FrameSource& input, const Params& p, const RenderOptions& opt);
 
   DumpTap* tap() { return tap_.get(); }
   size_t frames() const { return frames_; }
@@ -34,7 +33,8 @@ class FrameDriver {
   void start();  // the simulation starts: set-up before it is not timed
   double wall_s() const;
 
-  // A frame ended with its swap; `shown` is read only when frames are kept.
+  // A frame ended with its swap; `shown` is read only when frames are kept
+  // or handed on (RenderOptions::on_frame).
   void frame_ended(const std::function<RgbImage()>& shown);
   // How far the run is: `done` of `total` `unit` (polygons lit, triangles,
   // frames) in frame `frame`; `detail` follows. On the run's progress line
@@ -47,8 +47,9 @@ class FrameDriver {
 
  private:
   std::string backend_;
-  size_t frames_;
+  size_t frames_, ended_ = 0;
   bool keep_frames_, show_progress_;
+  FrameCallback on_frame_;
   std::unique_ptr<DumpTap> tap_;
   std::vector<RgbImage> kept_;
   std::chrono::steady_clock::time_point t0_;

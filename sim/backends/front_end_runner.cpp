@@ -1,6 +1,5 @@
 #include "backends/front_end_runner.hpp"
 
-#include "frontend/front_end.hpp"
 #include "io/progress_line.hpp"
 
 namespace girtd {
@@ -20,42 +19,29 @@ FrontEndOptions front_end_options(const Params& params, const PrunePlan& plan) {
   return o;
 }
 
-namespace {
-
-// `release`: the same trace as `polygons`, each frame's polygons released as it is done.
-FrontEndRun front_end_over(const Trace& polygons, const Params& params, const PrunePlan& prune, Trace* release) {
+FrontEndRunner::FrontEndRunner(const Params& params, const PrunePlan& prune)
+    : fe_(ScreenMap{params.screen_width, params.screen_height}, params.depth_max_mapped,
+          front_end_options(params, prune)) {
   count_front_end_pass();
-  FrontEnd fe(ScreenMap{params.screen_width, params.screen_height}, params.depth_max_mapped,
-              front_end_options(params, prune));
+}
+
+void FrontEndRunner::show_progress() {
+  fe_.on_progress([](size_t done, size_t total) { ProgressLine::get().step("front end", done, total, "polygons"); });
+}
+
+FrontEndRun run_front_end(const Trace& polygons, const Params& params, const PrunePlan& prune) {
+  FrontEndRunner fe(params, prune);
   FrontEndRun run;
   run.triangles.path = polygons.path;
   run.triangles.level = TraceLevel::kTriangle;
-  // The progress line counts polygons over every frame.
-  uint64_t all = 0, before = 0;
-  for (const TraceFrame& in : polygons.frames) all += in.world.polygons.size();
-  fe.on_progress([&](size_t done, size_t) { ProgressLine::get().step("front end", before + done, all, "polygons"); });
-  for (size_t i = 0; i < polygons.frames.size(); ++i) {
-    const TraceFrame& in = polygons.frames[i];
+  for (const TraceFrame& in : polygons.frames) {
     TraceFrame out;
     out.settings = in.settings;
-    const size_t count = in.world.polygons.size();
-    out.triangles = release ? fe.run_frame_releasing(release->frames[i].world, in.settings.window, in.settings.q)
-                            : fe.run_frame(in.world, in.settings.window, in.settings.q);
+    out.triangles = fe.run(in.world, in.settings);
     run.triangles.frames.push_back(std::move(out));
-    before += count;
   }
   run.counts = fe.counts();
   return run;
-}
-
-}  // namespace
-
-FrontEndRun run_front_end(const Trace& polygons, const Params& params, const PrunePlan& prune) {
-  return front_end_over(polygons, params, prune, nullptr);
-}
-
-FrontEndRun run_front_end_releasing(Trace& polygons, const Params& params, const PrunePlan& prune) {
-  return front_end_over(polygons, params, prune, &polygons);
 }
 
 }  // namespace girtd

@@ -18,10 +18,10 @@ void accumulate(DdaRunStats& total, const DdaRunStats& one) {
   total.span_clocks += one.span_clocks;
 }
 
-void GoldenBackend::begin(const Trace& trace) {
-  thesis_mode_ = trace.level == TraceLevel::kThesis;
+void GoldenBackend::begin(const FrameSource& input) {
+  thesis_mode_ = input.level() == TraceLevel::kThesis;
   counts_.dda = DdaRunStats{};  // no triangle reaching the DDA: it ran 0 clocks, as rtl's counters say
-  if (!thesis_mode_) return require_hardware_q(trace);
+  if (!thesis_mode_) return require_hardware_q(input);
   // PIX_INTERNO fixes Q = 1; the program draws a picture in the frame's top-left corner.
   had_.set_screen(thesis_params_.thesis.width, thesis_params_.thesis.height);
 }

@@ -14,7 +14,7 @@ class GoldenBackend : public HadBackend {
   explicit GoldenBackend(const Params& p)
       : HadBackend(p), preparer_(p), engine_(p), thesis_params_(p.with_thesis_formats()),
         ddapix_(thesis_params_, ThesisInside::kProgram) {}
-  void begin(const Trace& trace) override;
+  void begin(const FrameSource& input) override;
   void prune(const PrunePlan& plan) override {
     engine_.skip_unreachable_wraps(plan.unreachable_wraps);
     engine_.compute_spans(plan.dda_spans);

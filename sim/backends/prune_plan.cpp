@@ -2,10 +2,10 @@
 
 namespace girtd {
 
-PrunePlan plan_pruning(const Trace& input, bool enabled) {
+PrunePlan plan_pruning(TraceLevel input, bool enabled) {
   PrunePlan plan;
   if (!enabled) return plan;
-  plan.lighting_out_of_view = input.level == TraceLevel::kPolygon;
+  plan.lighting_out_of_view = input == TraceLevel::kPolygon;
   plan.unreachable_wraps = true;
   plan.dda_spans = true;
   return plan;

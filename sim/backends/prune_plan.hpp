@@ -29,7 +29,7 @@ struct PrunePlan {
 };
 
 // `enabled`: false for --no-prune (nothing is skipped).
-PrunePlan plan_pruning(const Trace& input, bool enabled);
+PrunePlan plan_pruning(TraceLevel input, bool enabled);
 
 struct LeftOut {
   std::string unit;

@@ -7,9 +7,9 @@
 
 namespace girtd {
 
-void ReferenceBackend::begin(const Trace& trace) {
-  if (trace.level != TraceLevel::kTriangle)
-    throw InputError(trace.path, 0,
+void ReferenceBackend::begin(const FrameSource& input) {
+  if (input.level() != TraceLevel::kTriangle && input.level() != TraceLevel::kPolygon)
+    throw InputError(input.path(), 0,
                      "the reference back end needs triangle-level input (a DDA trace holds no float triangles)");
 }
 

@@ -9,7 +9,7 @@ namespace girtd {
 class ReferenceBackend : public HadBackend {
  public:
   explicit ReferenceBackend(const Params& p) : HadBackend(p), rules_{p.fill_top_left, p.edge_flags} {}
-  void begin(const Trace& trace) override;
+  void begin(const FrameSource& input) override;
   void draw(const Triangle& t) override;
   void draw(const DdaParams& d) override;  // refused by begin(): a DDA trace holds no float triangles
   void finish(RunStats& stats) const override;

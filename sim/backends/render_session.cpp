@@ -1,38 +1,55 @@
 #include "backends/render_session.hpp"
 
+#include <chrono>
+#include <optional>
 #include <stdexcept>
 
 #include "backends/dump_tap.hpp"
 #include "backends/frame_driver.hpp"
+#include "backends/front_end_runner.hpp"
 
 namespace girtd {
 
 BackendRequest backend_request(const RenderOptions& opt) { return {opt.wave.has_value(), opt.sample_timing}; }
 
-RenderOutput render_trace(const BackendEntry& entry, const Trace& trace, const Params& params, const RenderOptions& opt) {
+RenderOutput render_frames(const BackendEntry& entry, FrameSource& input, const Params& params, const RenderOptions& opt) {
   if (entry.timed()) throw std::logic_error("a timed back end runs in the pipeline: " + entry.name);
   // Made before the run starts: its video memory exists before the first frame, as the hardware's does.
   const std::unique_ptr<Backend> made = entry.make(params, backend_request(opt));
   Backend& backend = *made;
   backend.prune(opt.prune);
-  backend.begin(trace);
+  backend.begin(input);
   // --dump: the input as it came, the front end's triangles as drawn, or the
   // DDA parameter sets as the back end draws them.
-  const Trace& input = opt.polygon_source ? *opt.polygon_source : trace;
   FrameDriver driver(entry.name, input, params, opt);
   DumpTap* tap = driver.tap();
   const bool dda_tap = tap && tap->level() == TraceLevel::kDda;
   if (dda_tap && !backend.tap_dda([tap](const DdaParams& d) { tap->write(d); }))
     // run_render refuses --dump dda up front for a back end without kDrawsWithDda.
     throw std::logic_error("--dump dda reached the " + entry.name + " back end, which has no DDA");
+  const bool polygons = input.level() == TraceLevel::kPolygon;
+  std::optional<FrontEndRunner> front_end;
+  if (polygons) front_end.emplace(params, opt.prune);
+  const size_t n_frames = input.frames();
+  if (front_end && n_frames == 1 && opt.progress) front_end->show_progress();
 
   driver.start();
   RenderOutput out;
-  const size_t n_frames = trace.frames.size();
+  double front_end_s = 0;  // not the back end's: wall_s leaves it out (report.json)
   for (size_t i = 0; i < n_frames; ++i) {
-    const TraceFrame& f = trace.frames[i];
+    TraceFrame f = input.take(i);
     if (dda_tap) tap->begin_frame(f.settings);
-    else if (tap) tap->frame(tap->level() == TraceLevel::kPolygon ? input.frames[i] : f);
+    else if (tap && tap->level() == TraceLevel::kPolygon) tap->frame(f);
+    if (front_end) {
+      // The polygons go as soon as the front end is through with them, unless
+      // a polygon-level dump still writes them.
+      const auto t0 = std::chrono::steady_clock::now();
+      f.triangles = tap && tap->level() == TraceLevel::kPolygon ? front_end->run(f.world, f.settings)
+                                                                 : front_end->run_releasing(f.world, f.settings);
+      f.world = WorldFrame{};
+      front_end_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
+    if (tap && !dda_tap && tap->level() != TraceLevel::kPolygon) tap->frame(f);
     backend.begin_frame(f.settings);
     for (size_t k = 0; k < f.triangles.size(); ++k) {
       backend.draw(f.triangles[k]);
@@ -45,7 +62,8 @@ RenderOutput render_trace(const BackendEntry& entry, const Trace& trace, const P
     driver.progress(i, i + 1, n_frames, "frames");
   }
   backend.finish(out.stats);
-  out.stats.wall_s = driver.wall_s();
+  if (front_end) out.stats.frontend = front_end->counts();
+  out.stats.wall_s = driver.wall_s() - front_end_s;
   out.shown = backend.shown();
   out.z = backend.z_plane();
   if (dda_tap) backend.tap_dda({});  // the tap dies with the driver

@@ -56,7 +56,6 @@ int run_render(const RenderArgs& a) {
   request.level = a.level;
   request.camera = a.camera;
   request.repeat = a.repeat;
-  request.keep_all_frames = a.frames == "all";
   request.prune = !a.no_prune;
   request.aa = a.aa;
   request.sample_timing = a.sample_timing;
@@ -65,6 +64,13 @@ int run_render(const RenderArgs& a) {
   request.wave_window = a.wave_window;
   request.wave_scopes = a.wave_scopes;
   request.progress = isatty(STDERR_FILENO);
+  OutputSet files(dir);
+  if (a.frames == "all")  // each frame's PNG as the frame ends: a long animation holds none
+    request.on_frame = [&files](size_t i, const RgbImage& picture) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%03zu.png", i);
+      files.write_now(name, [&](const std::string& p) { write_png_rgb(p, picture); });
+    };
   const RenderResult out = render(request);
   if (out.problem) {
     std::fprintf(stderr, "%s\n", out.problem->formatted().c_str());
@@ -75,14 +81,8 @@ int run_render(const RenderArgs& a) {
   // The machine's, not the input's: on stderr, not in report.json.
   if (!charts) std::fprintf(stderr, "warning: report.html: %s\n", kNoChartLibrary);
 
-  OutputSet files(dir);
   const std::string frame_png = png_rgb_bytes(out.frame);  // frame.png and the page's picture: encoded once
   files.add_text("frame.png", frame_png);
-  for (size_t i = 0; i < out.per_frame.size(); ++i) {
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%03zu.png", i);
-    files.add(name, [&, i](const std::string& p) { write_png_rgb(p, out.per_frame[i]); });
-  }
   if (a.z_png)
     files.add("z.png", [&](const std::string& p) { write_png_gray16(p, out.frame.width, out.frame.height, out.z); });
   // A path holding a byte of no UTF-8 character is replaced, not fatal.
@@ -92,7 +92,7 @@ int run_render(const RenderArgs& a) {
   if (!a.compare.empty()) {  // the same input on the picture yardstick, in this process (it is untimed)
     RenderRequest yardstick = request;
     yardstick.backend = a.compare;
-    yardstick.keep_all_frames = false;
+    yardstick.on_frame = nullptr;
     yardstick.dump.clear();
     yardstick.sample_timing.reset();
     yardstick.wave.clear();

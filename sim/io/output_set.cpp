@@ -24,7 +24,8 @@ void check_output_dir(const std::string& dir, const char* option) {
 OutputSet::~OutputSet() {
   if (committed_) return;
   std::error_code ec;
-  for (const std::string& t : written_tmp_) fs::remove(t, ec);
+  for (const std::string& t : done_tmp_) fs::remove(t, ec);
+  if (made_dir_) fs::remove(dir_, ec);  // only when empty
 }
 
 void OutputSet::add(const std::string& name, const std::function<void(const std::string&)>& write) {
@@ -40,18 +41,34 @@ void OutputSet::add_text(const std::string& name, const std::string& text) {
   });
 }
 
-void OutputSet::commit() {
+void OutputSet::make_dir() {
   std::error_code ec;
+  if (fs::is_directory(dir_, ec)) return;
   fs::create_directories(dir_, ec);
   if (ec) throw InputError(dir_, 0, "cannot create output directory: " + ec.message());
-  for (size_t i = 0; i < names_.size(); ++i) {
-    const std::string tmp = path("." + names_[i] + ".partial");
-    written_tmp_.push_back(tmp);
-    writers_[i](tmp);
-  }
-  for (size_t i = 0; i < names_.size(); ++i) {
-    fs::rename(written_tmp_[i], path(names_[i]), ec);
-    if (ec) throw InputError(path(names_[i]), 0, "cannot move output into place: " + ec.message());
+  made_dir_ = true;
+}
+
+std::string OutputSet::write_tmp(const std::string& name, const std::function<void(const std::string&)>& write) {
+  const std::string tmp = path("." + name + ".partial");
+  done_names_.push_back(name);
+  done_tmp_.push_back(tmp);
+  write(tmp);
+  return tmp;
+}
+
+void OutputSet::write_now(const std::string& name, const std::function<void(const std::string&)>& write) {
+  make_dir();
+  write_tmp(name, write);
+}
+
+void OutputSet::commit() {
+  make_dir();
+  for (size_t i = 0; i < names_.size(); ++i) write_tmp(names_[i], writers_[i]);
+  std::error_code ec;
+  for (size_t i = 0; i < done_names_.size(); ++i) {
+    fs::rename(done_tmp_[i], path(done_names_[i]), ec);
+    if (ec) throw InputError(path(done_names_[i]), 0, "cannot move output into place: " + ec.message());
   }
   committed_ = true;
 }

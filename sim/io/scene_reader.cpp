@@ -24,6 +24,7 @@
 #include "io/json_lines.hpp"
 #include "io/model_import.hpp"
 #include "io/scene_placement.hpp"
+#include "io/frame_source.hpp"
 
 namespace girtd {
 namespace fs = std::filesystem;
@@ -42,6 +43,48 @@ struct CameraSpec {
   std::optional<double> near;  // a model file's camera: its near clip plane
 };
 
+// One frame as the scene file says it: read and checked before any is placed.
+struct FramePlan {
+  CameraSpec camera;
+  std::vector<Transform> transforms;  // each instance's
+  int source_line = 0;                // the frame's line (the polygons' source)
+};
+
+// Places a scene's frames one at a time, in order, as the run takes them.
+struct ScenePlacer {
+  WorldFrame base;  // lights, back-face culling
+  std::vector<Instance> instances;
+  std::vector<FramePlan> frames;
+  std::optional<double> focal;
+  std::optional<Camera> auto_camera;  // framed once, on the first frame that needs it
+  double auto_focal = 0;
+
+  TraceFrame place_frame(size_t f, const FrameSettings& settings) {
+    const FramePlan& plan = frames.at(f);
+    for (size_t k = 0; k < instances.size(); ++k) instances[k].transform = plan.transforms[k];
+    TraceFrame tf;
+    tf.settings = settings;
+    tf.world.cull_back_faces = base.cull_back_faces;
+    tf.world.lights = base.lights;
+    place(instances, tf.world);
+    for (WorldPolygon& p : tf.world.polygons) p.source_line = plan.source_line;
+    if (plan.camera.automatic) {
+      // So an animation does not zoom.
+      if (!auto_camera) {
+        auto_frame(tf.world, SceneDefaults::kFovDeg, focal);
+        auto_camera = tf.world.camera;
+        auto_focal = tf.world.focal_distance;
+      }
+      tf.world.camera = *auto_camera;
+      tf.world.focal_distance = auto_focal;
+    } else {
+      tf.world.camera = plan.camera.camera;
+      tf.world.focal_distance = focal ? *focal : plan.camera.near ? *plan.camera.near : SceneDefaults::kFocalDistance;
+    }
+    return tf;
+  }
+};
+
 
 class SceneReader {
  public:
@@ -58,7 +101,7 @@ class SceneReader {
   SceneReader(const json& document, const std::string& name, const Params& params, const std::string& camera_name)
       : path_(name), params_(params), camera_name_(camera_name), root_(document) {}
 
-  Trace read() {
+  FrameSource read() {
     const Ptr root;
     keys(root_, root, {"girtd_scene", "comment", "window", "background", "q", "cull_back_faces", "focal_distance",
                        "camera", "lights", "materials", "models", "frames"});
@@ -105,46 +148,30 @@ class SceneReader {
       if (std::optional<PlacedCamera> c = file_camera(instances, camera_name_, "--camera", warnings_))
         base_camera = CameraSpec{false, c->camera, c->near};
 
-    Trace trace;
-    trace.path = path_;
-    trace.level = TraceLevel::kPolygon;
+    // Every frame's keys are read and checked now; its polygons are placed
+    // only when the run takes it (ScenePlacer).
+    auto placer = std::make_shared<ScenePlacer>();
     const bool has_frames = root_.contains("frames");
     const size_t n_frames = has_frames ? frames_count() : 1;
-    check_corners(instances, n_frames, has_frames ? root / "frames" : root / "models");
-    std::optional<Camera> auto_camera;
+    check_corners(instances, root / "models");
     for (size_t f = 0; f < n_frames; ++f) {
       const Ptr fp = root / "frames" / f;
-      CameraSpec cam = base_camera;
-      std::vector<Instance> moved = instances;
+      FramePlan plan{base_camera, {}, line(has_frames ? fp : root / "models")};
+      for (const Instance& in : instances) plan.transforms.push_back(in.transform);
       if (has_frames) {
         keys(at(fp), fp, {"camera", "models", "comment"});
-        if (at(fp).contains("camera") && camera_name_.empty()) cam = camera(fp / "camera");  // --camera wins
-        if (at(fp).contains("models")) frame_models(fp / "models", moved);
+        if (at(fp).contains("camera") && camera_name_.empty()) plan.camera = camera(fp / "camera");  // --camera wins
+        if (at(fp).contains("models")) frame_models(fp / "models", instances, plan.transforms);
       }
-      TraceFrame tf;
-      tf.settings = settings;
-      tf.world.cull_back_faces = base.cull_back_faces;
-      tf.world.lights = base.lights;
-      place(moved, tf.world);
-      const int source = line(has_frames ? fp : root / "models");
-      for (WorldPolygon& p : tf.world.polygons) p.source_line = source;
-      if (cam.automatic) {
-        // Framed once, on the first frame that needs it, so an animation does not zoom.
-        if (!auto_camera) {
-          auto_frame(tf.world, SceneDefaults::kFovDeg, focal);
-          auto_camera = tf.world.camera;
-          auto_focal_ = tf.world.focal_distance;
-        }
-        tf.world.camera = *auto_camera;
-        tf.world.focal_distance = auto_focal_;
-      } else {
-        tf.world.camera = cam.camera;
-        tf.world.focal_distance = focal ? *focal : cam.near ? *cam.near : SceneDefaults::kFocalDistance;
-      }
-      trace.frames.push_back(std::move(tf));
+      placer->frames.push_back(std::move(plan));
     }
-    trace.warnings = warnings_;
-    return trace;
+    if (params_.q_override) apply_q_override(settings, params_);
+    placer->base = std::move(base);
+    placer->focal = focal;
+    const uint64_t objects = n_frames * instances.size();  // place() makes one object an instance
+    placer->instances = std::move(instances);
+    return FrameSource(path_, TraceLevel::kPolygon, std::vector<FrameSettings>(n_frames, settings), objects,
+                       warnings_, [placer, settings](size_t f) { return placer->place_frame(f, settings); });
   }
 
  private:
@@ -396,27 +423,26 @@ class SceneReader {
     return f.size();
   }
 
-  // Every frame's polygons are placed before the front end runs: their
-  // corners, over all frames, are capped (kMaxSceneCorners).
-  void check_corners(const std::vector<Instance>& instances, size_t frames, const Ptr& where) const {
-    uint64_t per_frame = 0;
-    for (const Instance& in : instances)
-      per_frame += in.mesh().corners.size();
-    if (per_frame > kMaxSceneCorners / frames)
-      fail(where, std::to_string(frames) + (frames == 1 ? " frame" : " frames") + " x " + std::to_string(per_frame) +
-                      " polygon corners is more than the " + std::to_string(kMaxSceneCorners) +
-                      " corners a scene may place: use fewer frames or smaller models");
+  // A frame's polygons are placed whole before the front end runs: their
+  // corners are capped (kMaxSceneCorners).
+  void check_corners(const std::vector<Instance>& instances, const Ptr& where) const {
+    uint64_t corners = 0;
+    for (const Instance& in : instances) corners += in.mesh().corners.size();
+    if (corners > kMaxSceneCorners)
+      fail(where, std::to_string(corners) + " polygon corners in a frame is more than the " +
+                      std::to_string(kMaxSceneCorners) + " a scene may place: use smaller models or fewer of them");
   }
 
-  void frame_models(const Ptr& ptr, std::vector<Instance>& moved) const {
+  // A frame's transforms of the named models, over the scene's (`transforms`: each instance's).
+  void frame_models(const Ptr& ptr, const std::vector<Instance>& instances, std::vector<Transform>& transforms) const {
     const json& m = at(ptr);
     if (!m.is_object()) fail(ptr, "a frame's \"models\" is an object: model name -> transform");
     for (auto it = m.begin(); it != m.end(); ++it) {
       const Ptr mp = ptr / it.key();
-      auto in = std::find_if(moved.begin(), moved.end(), [&](const Instance& x) { return x.name == it.key(); });
-      if (in == moved.end()) fail(mp, "no model named \"" + it.key() + "\"");
+      auto in = std::find_if(instances.begin(), instances.end(), [&](const Instance& x) { return x.name == it.key(); });
+      if (in == instances.end()) fail(mp, "no model named \"" + it.key() + "\"");
       keys(it.value(), mp, {"scale", "rotate_deg", "translate"});
-      transform_keys(mp, in->transform);
+      transform_keys(mp, transforms[size_t(in - instances.begin())]);
     }
   }
 
@@ -426,22 +452,21 @@ class SceneReader {
   std::vector<std::string> warnings_;  // the models' (each imported once)
   json root_;
   std::unique_ptr<JsonLines> lines_;
-  double auto_focal_ = 0;
 };
 
 }  // namespace
 
-Trace read_scene(const std::string& path, const Params& params, const std::string& camera) {
-  Trace t = SceneReader(path, params, camera).read();
-  apply_q_override(t, params);
-  return t;
+FrameSource open_scene(const std::string& path, const Params& params, const std::string& camera) {
+  return SceneReader(path, params, camera).read();
 }
 
-Trace read_scene_document(const nlohmann::json& document, const std::string& name, const Params& params,
-                          const std::string& camera) {
-  Trace t = SceneReader(document, name, params, camera).read();
-  apply_q_override(t, params);
-  return t;
+FrameSource open_scene_document(const nlohmann::json& document, const std::string& name, const Params& params,
+                                const std::string& camera) {
+  return SceneReader(document, name, params, camera).read();
+}
+
+Trace read_scene(const std::string& path, const Params& params, const std::string& camera) {
+  return open_scene(path, params, camera).all();
 }
 
 Trace scene_from_model(const std::string& path, const Params& params, const std::string& camera) {

@@ -49,5 +49,6 @@ struct Trace {
 // Config dda.q_override (render --aa): every frame's Q, and every DDA
 // parameter set's, replaced as the input is read (not the thesis level).
 void apply_q_override(Trace& trace, const Params& params);
+void apply_q_override(FrameSettings& settings, const Params& params);
 
 }  // namespace girtd

@@ -20,10 +20,15 @@ namespace girtd {
 void apply_q_override(Trace& trace, const Params& params) {
   if (!params.q_override || trace.level == TraceLevel::kThesis) return;
   for (TraceFrame& f : trace.frames) {
-    f.settings.q = *params.q_override;
-    f.settings.q_line = 0;
+    apply_q_override(f.settings, params);
     for (DdaParams& d : f.dda) d.q = *params.q_override;
   }
+}
+
+void apply_q_override(FrameSettings& settings, const Params& params) {
+  if (!params.q_override) return;
+  settings.q = *params.q_override;
+  settings.q_line = 0;
 }
 
 const char* level_name(TraceLevel level) {

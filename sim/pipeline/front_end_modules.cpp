@@ -9,13 +9,14 @@
 
 namespace girtd {
 
-void PipelineElaboration::build_from_polygons(const Trace& polygons) {
+void PipelineElaboration::build_from_polygons() {
   count_front_end_pass();
-  polygon_source_ = &polygons;
-  for (const TraceFrame& f : polygons.frames) objects_.push_back(frame_objects(f.world));
-  // The progress line counts the objects the culling stage has taken.
-  for (const auto& o : objects_) total_items_ += o.size();
-  auto& src = source<WorldObject>(objects_);
+  auto& src = source<WorldObject>([this](size_t f) {
+    auto frame = std::make_shared<const TraceFrame>(take(f));
+    std::vector<WorldObject> objects = frame_objects(frame->world);
+    live_frames_[f] = {std::move(frame), 0};
+    return objects;
+  });
 
   // Culling, in front of lighting: an object's bounding sphere (when
   // culling.objects is on), then each polygon's back-face test (when the
@@ -134,12 +135,15 @@ void PipelineElaboration::build_from_polygons(const Trace& polygons) {
 }
 
 void PipelineElaboration::begin(FrontEndStages& s, size_t frame) {
-  s.begin_frame(polygon_source_->frames[frame].world, settings_[frame].window, settings_[frame].q);
+  auto live = live_frames_.find(frame);  // the source stage made it before any stage begins it
+  std::shared_ptr<const TraceFrame>& held = stage_frames_[&s];
+  held = live->second.frame;  // the stage's previous frame goes, unless another stage still holds it
+  if (++live->second.begun == fe_.size()) live_frames_.erase(live);
+  s.begin_frame(held->world, settings_[frame].window, settings_[frame].q);
 }
 
-void PipelineElaboration::build_from_triangles(const Trace& trace) {
-  for (const TraceFrame& f : trace.frames) triangles_.push_back(f.triangles);
-  auto& src = source<Triangle>(triangles_);
+void PipelineElaboration::build_from_triangles() {
+  auto& src = source<Triangle>([this](size_t f) { return take(f).triangles; });
   // The preparer makes the selection itself (and counts what it drops):
   // this stage only spends the thesis' clip-stage time on every triangle.
   auto& sel_out = stage<Triangle, Triangle>("window_clip", src, [](size_t, const Triangle& t, Work<Triangle>& w) {
@@ -148,9 +152,8 @@ void PipelineElaboration::build_from_triangles(const Trace& trace) {
   build_back(preparer(sel_out));
 }
 
-void PipelineElaboration::build_from_dda(const Trace& trace) {
-  for (const TraceFrame& f : trace.frames) dda_sets_.push_back(f.dda);
-  build_back(source<DdaParams>(dda_sets_));
+void PipelineElaboration::build_from_dda() {
+  build_back(source<DdaParams>([this](size_t f) { return take(f).dda; }));
 }
 
 sc_core::sc_fifo<Token<DdaParams>>& PipelineElaboration::preparer(sc_fifo<Token<Triangle>>& in) {

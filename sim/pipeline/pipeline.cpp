@@ -26,24 +26,33 @@ std::unique_ptr<Backend> make_timed(const BackendEntry& backend, const Params& p
 
 }  // namespace
 
-PipelineElaboration::PipelineElaboration(const BackendEntry& backend, const Trace& input, const Params& p,
+PipelineElaboration::PipelineElaboration(const BackendEntry& backend, FrameSource& input, const Params& p,
                                          const RenderOptions& opt, FrameDriver& driver)
-    : p_(p), opt_(opt), backend_(make_timed(backend, p, opt)), time_(*backend_->modeled_time()), driver_(driver) {
+    : p_(p),
+      opt_(opt),
+      backend_(make_timed(backend, p, opt)),
+      time_(*backend_->modeled_time()),
+      driver_(driver),
+      input_(input),
+      settings_(input.settings()),
+      polygon_input_(input.level() == TraceLevel::kPolygon) {
   DumpTap* tap = driver.tap();
   backend_->prune(opt.prune);
   backend_->begin(input);
-  for (const TraceFrame& f : input.frames) settings_.push_back(f.settings);
-  // The stream that entered is dumped as it is; one made inside, by the
-  // preparer stage as it crosses (front_end_modules.cpp).
-  if (tap && tap->level() == input.level)
-    for (const TraceFrame& f : input.frames) tap->frame(f);
-  else
-    tap_ = tap;
-  for (const TraceFrame& f : input.frames)  // for the progress line (polygon input: build_from_polygons)
-    total_items_ += f.triangles.size() + f.dda.size();
-  if (input.level == TraceLevel::kPolygon) build_from_polygons(input);
-  else if (input.level == TraceLevel::kTriangle) build_from_triangles(input);
-  else build_from_dda(input);
+  // The stream that entered is dumped as the source takes it (take()); one
+  // made inside, by the preparer stage as it crosses (front_end_modules.cpp).
+  if (!(tap && tap->level() == input.level())) tap_ = tap;
+  total_items_ = input.items();  // for the progress line
+  if (polygon_input_) build_from_polygons();
+  else if (input.level() == TraceLevel::kTriangle) build_from_triangles();
+  else build_from_dda();
+}
+
+TraceFrame PipelineElaboration::take(size_t f) {
+  TraceFrame frame = input_.take(f);
+  DumpTap* tap = driver_.tap();
+  if (tap && tap->level() == input_.level()) tap->frame(frame);
+  return frame;
 }
 
 RenderOutput PipelineElaboration::run() {
@@ -79,7 +88,7 @@ void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
     progress = [this](size_t frame, uint64_t triangles, double modeled_s) {
       // Polygon input: the triangle count is known only as the front end
       // makes them, so the share done is of the objects the first stage took.
-      const bool polygons = polygon_source_ != nullptr;
+      const bool polygons = polygon_input_;
       const uint64_t done = polygons ? activities_.front()->items : triangles;
       char detail[96] = "";
       if (polygons) std::snprintf(detail, sizeof detail, ", %llu triangles drawn", static_cast<unsigned long long>(triangles));
@@ -103,7 +112,7 @@ void PipelineElaboration::start_wave(const WaveOptions& w) {
   back_end_->record(wave_.get());
 }
 
-RenderOutput run_pipeline(const BackendEntry& backend, const Trace& input, const Params& p, const RenderOptions& opt) {
+RenderOutput run_pipeline(const BackendEntry& backend, FrameSource& input, const Params& p, const RenderOptions& opt) {
   static bool elaborated = false;
   if (elaborated) throw std::logic_error("SystemC elaborates once per process: one pipeline run per process");
   elaborated = true;

@@ -10,13 +10,13 @@
 #include "backends/backend_entry.hpp"
 #include "backends/render_session.hpp"
 #include "config/params.hpp"
-#include "io/trace.hpp"
+#include "io/frame_source.hpp"
 
 namespace girtd {
 
-// `input`: a polygon-level trace (models, scenes; the pipeline runs the
-// front end itself), a triangle- or a DDA-level one.
+// `input`: polygon level (models, scenes; the pipeline runs the front end
+// itself), triangle or DDA level; its frames are taken as the run reaches them.
 // `backend`: a timed entry (engine/backend_registry.hpp).
-RenderOutput run_pipeline(const BackendEntry& backend, const Trace& input, const Params& p, const RenderOptions& opt);
+RenderOutput run_pipeline(const BackendEntry& backend, FrameSource& input, const Params& p, const RenderOptions& opt);
 
 }  // namespace girtd

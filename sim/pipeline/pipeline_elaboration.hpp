@@ -31,7 +31,8 @@ using sc_core::sc_fifo;
 class PipelineElaboration {
  public:
   // `driver`: what runs around the frames (its tap: --dump's, or none).
-  PipelineElaboration(const BackendEntry& backend, const Trace& input, const Params& p, const RenderOptions& opt,
+  // `input` is taken frame by frame as the source stage reaches each.
+  PipelineElaboration(const BackendEntry& backend, FrameSource& input, const Params& p, const RenderOptions& opt,
                       FrameDriver& driver);
 
   RenderOutput run();
@@ -81,9 +82,9 @@ class PipelineElaboration {
   }
 
   template <typename T>
-  sc_fifo<Token<T>>& source(const std::vector<std::vector<T>>& frames) {
+  sc_fifo<Token<T>>& source(typename SourceStage<T>::FrameItems items) {
     sc_fifo<Token<T>>& out = fifo<T>("source_out");
-    auto m = std::make_unique<SourceStage<T>>("source", frames, fifo_activity(out));
+    auto m = std::make_unique<SourceStage<T>>("source", input_.frames(), std::move(items), fifo_activity(out));
     m->out(out);
     modules_.push_back(std::move(m));
     return out;
@@ -98,10 +99,13 @@ class PipelineElaboration {
   }
 
   // The modules an input needs (front_end_modules.cpp).
-  void build_from_polygons(const Trace& polygons);
+  void build_from_polygons();
   void begin(FrontEndStages& s, size_t frame);  // a stage's instance starts a frame
-  void build_from_triangles(const Trace& trace);
-  void build_from_dda(const Trace& trace);
+  void build_from_triangles();
+  void build_from_dda();
+  // The input's frame f, taken when the source stage reaches it; the input's
+  // own stream is dumped as it goes by.
+  TraceFrame take(size_t f);
   sc_fifo<Token<DdaParams>>& preparer(sc_fifo<Token<Triangle>>& in);
   void build_back(sc_fifo<Token<DdaParams>>& in);
 
@@ -117,11 +121,18 @@ class PipelineElaboration {
   std::unique_ptr<Backend> backend_;
   ModeledTime& time_;  // backend_'s
   FrameDriver& driver_;  // the dump tap, kept frames, progress, wall clock
+  FrameSource& input_;
   std::vector<FrameSettings> settings_;
-  const Trace* polygon_source_ = nullptr;
-  std::vector<std::vector<WorldObject>> objects_;
-  std::vector<std::vector<Triangle>> triangles_;
-  std::vector<std::vector<DdaParams>> dda_sets_;
+  bool polygon_input_ = false;
+  // Polygon input: a frame's world from the source stage until the last
+  // front-end stage has begun it (`begun` of them so far); then each stage
+  // holds it until it begins the next. So a few frames live at a time.
+  struct LiveFrame {
+    std::shared_ptr<const TraceFrame> frame;
+    size_t begun = 0;
+  };
+  std::map<size_t, LiveFrame> live_frames_;
+  std::map<const FrontEndStages*, std::shared_ptr<const TraceFrame>> stage_frames_;
   std::vector<std::unique_ptr<FrontEndStages>> fe_;
   std::vector<FrontPolygon> held_;
   std::vector<Triangle> to_sort_;     // the depth sort's frame, and each triangle's id

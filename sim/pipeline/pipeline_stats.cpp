@@ -27,7 +27,7 @@ void PipelineElaboration::collect(RunStats& s) const {
   s.maps = time_.screen_maps();
   s.frames = settings_.size();
   if (preparer_) s.preparer = preparer_->counts();
-  if (polygon_source_) {
+  if (polygon_input_) {
     FrontendCounts total;
     for (const auto& fe : fe_) total += fe->counts();
     s.frontend = total;

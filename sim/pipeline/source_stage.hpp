@@ -1,9 +1,11 @@
-// The pipeline's input: the trace's frames, item by item, as fast as the
-// first FIFO takes them (the database is not modeled).
+// The pipeline's input: the frames, item by item, as fast as the first FIFO
+// takes them (the database is not modeled). A frame's items are asked for
+// when the stage reaches it, so frames are made as the run goes.
 #pragma once
 
 #include <systemc>
 
+#include <functional>
 #include <vector>
 
 #include "timeline/stage_activity.hpp"
@@ -16,10 +18,12 @@ class SourceStage : public sc_core::sc_module {
  public:
   sc_core::sc_fifo_out<Token<T>> out;
 
+  // Frame f's items, asked for once each frame, in order.
+  using FrameItems = std::function<std::vector<T>(size_t f)>;
+
   SC_HAS_PROCESS(SourceStage);
-  // `frames` must outlive the simulation.
-  SourceStage(const sc_core::sc_module_name& name, const std::vector<std::vector<T>>& frames, FifoActivity& out_fifo)
-      : sc_module(name), frames_(frames), out_fifo_(out_fifo) {
+  SourceStage(const sc_core::sc_module_name& name, size_t frames, FrameItems items, FifoActivity& out_fifo)
+      : sc_module(name), frames_(frames), items_(std::move(items)), out_fifo_(out_fifo) {
     SC_THREAD(run);
   }
 
@@ -29,15 +33,17 @@ class SourceStage : public sc_core::sc_module {
     out_fifo_.push(sc_core::sc_time_stamp().to_seconds());
   }
   void run() {
-    for (size_t f = 0; f < frames_.size(); ++f) {
+    for (size_t f = 0; f < frames_; ++f) {
+      const std::vector<T> items = items_(f);
       put({TokenKind::kFrameBegin, f, {}});
-      for (const T& item : frames_[f]) put({TokenKind::kItem, f, item});
+      for (const T& item : items) put({TokenKind::kItem, f, item});
       put({TokenKind::kFrameEnd, f, {}});
     }
-    put({TokenKind::kEnd, frames_.size(), {}});
+    put({TokenKind::kEnd, frames_, {}});
   }
 
-  const std::vector<std::vector<T>>& frames_;
+  size_t frames_;
+  FrameItems items_;
   FifoActivity& out_fifo_;
 };
 

@@ -26,7 +26,7 @@ class BackendRtl : public Backend, public ModeledTime {
  public:
   using Backend::begin_frame;
   using Backend::draw;
-  void begin(const Trace& trace) override { require_pipeline_input(trace); }
+  void begin(const FrameSource& input) override { require_pipeline_input(input); }
   ModeledTime* modeled_time() override { return this; }
   // A frame cleared to `background` (drivers without frame settings).
   void begin_frame(Rgb background) {

@@ -118,13 +118,14 @@ RegressionRow regress_trace(const std::string& path, const Params& p, DdaRtl& rt
                             double stall) {
   RegressionRow row;
   row.name = path;
-  const Trace trace = read_trace(path, std::nullopt, p);
-  if (trace.level != TraceLevel::kTriangle && trace.level != TraceLevel::kDda)
-    throw InputError(path, 0, std::string("regress takes triangle- and DDA-level traces, not ") + level_name(trace.level));
-  require_hardware_q(trace);
+  FrameSource input(read_trace(path, std::nullopt, p));
+  if (input.level() != TraceLevel::kTriangle && input.level() != TraceLevel::kDda)
+    throw InputError(path, 0, std::string("regress takes triangle- and DDA-level traces, not ") + level_name(input.level()));
+  require_hardware_q(input);
   FrameChecker checker(p, rtl, backend, stall, 1);
   DdaPreparer prep(p);
-  for (const TraceFrame& f : trace.frames) {
+  for (size_t i = 0; i < input.frames(); ++i) {
+    const TraceFrame f = input.take(i);
     checker.begin_frame(f.settings.background);
     DdaParams d;
     for (const Triangle& t : f.triangles)

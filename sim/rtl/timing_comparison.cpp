@@ -17,12 +17,12 @@ using Frames = std::vector<std::vector<DdaParams>>;
 
 // The trace's frames through one back end (made outside the timed part);
 // its wall time.
-double draw_frames(Backend& backend, const Trace& trace, const Frames& frames) {
+double draw_frames(Backend& backend, const FrameSource& input, const Frames& frames) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
-  backend.begin(trace);
+  backend.begin(input);
   for (size_t i = 0; i < frames.size(); ++i) {
-    backend.begin_frame(trace.frames[i].settings);
+    backend.begin_frame(input.settings()[i]);
     for (const DdaParams& d : frames[i]) backend.draw(d);
     backend.end_frame();
   }
@@ -32,10 +32,11 @@ double draw_frames(Backend& backend, const Trace& trace, const Frames& frames) {
 }  // namespace
 
 TimingComparison compare_timing(const Params& p, const std::string& trace_path) {
-  const Trace trace = read_trace(trace_path, std::nullopt, p);
+  FrameSource input(read_trace(trace_path, std::nullopt, p));
   DdaPreparer prep(p);
-  Frames frames;
-  for (const TraceFrame& f : trace.frames) {
+  Frames frames;  // every frame's DDA sets, made before the timed part
+  for (size_t i = 0; i < input.frames(); ++i) {
+    const TraceFrame f = input.take(i);
     frames.emplace_back(f.dda);
     DdaParams d;
     for (const Triangle& t : f.triangles)
@@ -44,7 +45,7 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
   TimingComparison c;
   {
     const std::unique_ptr<Backend> approx = make_approx_backend(p, std::nullopt);
-    c.model_wall_s = draw_frames(*approx, trace, frames);
+    c.model_wall_s = draw_frames(*approx, input, frames);
     const ModeledTime& time = *approx->modeled_time();
     c.model = time.result();
     c.model_fifo = time.fifo_levels(c.model.ticks);
@@ -52,7 +53,7 @@ TimingComparison compare_timing(const Params& p, const std::string& trace_path) 
   }
   const std::unique_ptr<BackendRtl> rtl = make_backend_rtl(p);
   if (record_series()) rtl->record_screen_maps();
-  c.rtl_wall_s = draw_frames(*rtl, trace, frames);
+  c.rtl_wall_s = draw_frames(*rtl, input, frames);
   c.rtl = rtl->result();
   c.rtl_fifo = rtl->fifo_levels(c.rtl.ticks);
   c.rtl_maps = rtl->screen_maps();

@@ -185,7 +185,7 @@ int run_accuracy(const AccuracyArgs& a) {
   const std::vector<ConfigVariant> variants = config_variants(a.vary);
   // Bad usage and bad input are found before anything runs or is written.
   const Params base_params = load_params(a.config);
-  for (const std::string& input : inputs) read_input(input, std::nullopt, base_params);
+  for (const std::string& input : inputs) open_input(input, std::nullopt, base_params);
 
   const fs::path runs = fs::path(a.out_dir) / "runs";
   fs::create_directories(runs);

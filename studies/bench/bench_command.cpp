@@ -121,7 +121,8 @@ int run_bench(const BenchArgs& a) {
     for (const BackendEntry* e : untimed) {
       const BackendEntry& entry = *e;
       const std::string& name = entry.name;
-      const RenderOutput out = render_trace(entry, trace, params, {});
+      FrameSource input(trace);
+      const RenderOutput out = render_frames(entry, input, params, {});
       if (entry.has(kExactPicture)) reference = out;
       // The accuracy command's picture error (accuracy/accuracy_table.hpp).
       const ImageError err = compare_images(out.shown, reference.shown);

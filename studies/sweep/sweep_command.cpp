@@ -223,7 +223,7 @@ SweepSetup prepare_sweep(const SweepArgs& a, size_t slice, size_t slices, bool w
   std::map<std::string, bool> repeat;
   s.base = Params::from_files(s.spec.base);
   for (const std::string& input : s.spec.inputs) {
-    const size_t frames = read_input(input, std::nullopt, s.base).frames.size();
+    const size_t frames = open_input(input, std::nullopt, s.base).frames();
     repeat[input] = s.spec.repeat > 1 && frames == 1;
     if (s.spec.repeat > 1 && frames > 1 && warn)
       std::fprintf(stderr, "warning: %s: %zu frames: \"repeat\" draws one-frame inputs; this one runs as it is\n",

@@ -65,7 +65,8 @@ TEST_CASE("a slow preparer sets the pace: busy N x 115 flop / rate, the DDA star
   const double rate = 1e5;  // 1.15 ms per triangle
   const Params p = with(R"({"pipeline": {"flops_per_s": {"preparer": 1e5, "window_clip": 1e12}}})");
   const Trace trace = small_triangles(40, 3);
-  const RenderOutput out = run_pipeline(backend_named("approx"), trace, p, {});
+  FrameSource input(trace);
+  const RenderOutput out = run_pipeline(backend_named("approx"), input, p, {});
   const RunStats& s = out.stats;
   const double per_triangle = 115.0 / rate;
   REQUIRE(preparer_ops(Params::defaults()).flops() == 115.0);
@@ -90,7 +91,8 @@ TEST_CASE("a slow preparer sets the pace: busy N x 115 flop / rate, the DDA star
 
 TEST_CASE("a FIFO two deep blocks the stage before a slow one and never holds more than two", "[pipeline]") {
   const Params p = with(R"({"pipeline": {"fifo_depth": 2, "flops_per_s": {"preparer": 1e5, "window_clip": 1e12}}})");
-  const RenderOutput out = run_pipeline(backend_named("approx"), small_triangles(30, 4), p, {});
+  FrameSource input(small_triangles(30, 4));
+  const RenderOutput out = run_pipeline(backend_named("approx"), input, p, {});
   const StageStats& clip = stage(out.stats, "window_clip");
   const StageStats& prep = stage(out.stats, "preparer");
   // The window clip finishes at once, then waits for the preparer to take
@@ -115,7 +117,8 @@ TEST_CASE("rtl in the pipeline takes exactly the bare Verilated back end's ticks
     bare_rgb = bare->shown().rgb;
   }
 
-  const RenderOutput out = run_pipeline(backend_named("rtl"), dda, p, {});
+  FrameSource input(dda);
+  const RenderOutput out = run_pipeline(backend_named("rtl"), input, p, {});
   REQUIRE(out.stats.timing);
   CHECK(out.stats.timing->modeled_s == Approx(double(c.ticks) * p.base_tick_ns * 1e-9).epsilon(1e-12));
   CHECK(out.stats.pixels_generated == c.pixels_generated);
@@ -134,7 +137,8 @@ TEST_CASE("approx in the pipeline takes exactly the bare approx back end's ticks
   bare->end_frame();
   const BackendResult c = bare->modeled_time()->result();
 
-  const RenderOutput out = run_pipeline(backend_named("approx"), dda, p, {});
+  FrameSource input(dda);
+  const RenderOutput out = run_pipeline(backend_named("approx"), input, p, {});
   REQUIRE(out.stats.timing);
   CHECK(out.stats.timing->modeled_s == Approx(double(c.ticks) * p.base_tick_ns * 1e-9).epsilon(1e-12));
   CHECK(out.stats.pixels_generated == c.pixels_generated);
@@ -149,9 +153,11 @@ TEST_CASE("the timed front end, stages working on different frames at once, give
   const FrontEndRun fe = run_front_end(polygons, p, PrunePlan{});
   RenderOptions keep;
   keep.keep_all_frames = true;
-  const RenderOutput want = render_trace(backend_named("golden"), fe.triangles, p, keep);
+  FrameSource drawn_by_golden(fe.triangles);
+  const RenderOutput want = render_frames(backend_named("golden"), drawn_by_golden, p, keep);
 
-  const RenderOutput got = run_pipeline(backend_named("approx"), polygons, p, keep);
+  FrameSource polygons_in(polygons);
+  const RenderOutput got = run_pipeline(backend_named("approx"), polygons_in, p, keep);
   REQUIRE(got.stats.frontend);
   CHECK(got.stats.frontend->triangles_out == fe.counts.triangles_out);
   CHECK(got.stats.frontend->depth_sort_comparisons == fe.counts.depth_sort_comparisons);

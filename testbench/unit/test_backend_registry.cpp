@@ -64,8 +64,9 @@ TEST_CASE("the frame driver keeps each frame's picture only for --frames all and
   int reads = 0;
   auto shown = [&] { return ++reads, img; };
 
+  const FrameSource input(t);
   RenderOptions plain;
-  FrameDriver a("golden", t, p, plain);
+  FrameDriver a("golden", input, p, plain);
   CHECK(a.tap() == nullptr);
   a.frame_ended(shown);
   a.frame_ended(shown);
@@ -79,7 +80,7 @@ TEST_CASE("the frame driver keeps each frame's picture only for --frames all and
   const std::string dump = test::temp_file("frame_driver.trace", "");
   std::filesystem::remove(dump);
   keep.dump = DumpRequest{TraceLevel::kTriangle, dump};
-  FrameDriver b("golden", t, p, keep);
+  FrameDriver b("golden", input, p, keep);
   REQUIRE(b.tap() != nullptr);
   for (const TraceFrame& f : t.frames) {
     b.tap()->frame(f);
@@ -91,6 +92,21 @@ TEST_CASE("the frame driver keeps each frame's picture only for --frames all and
   CHECK(reads == 2);
   CHECK(out_b.per_frame.size() == 2);
   CHECK(std::filesystem::exists(dump));
+
+  RenderOptions hand_on;  // --frames all: each frame handed on as it ends, none held
+  std::vector<size_t> handed;
+  hand_on.on_frame = [&](size_t i, const RgbImage& picture) {
+    CHECK(picture.rgb == img.rgb);
+    handed.push_back(i);
+  };
+  FrameDriver c("golden", input, p, hand_on);
+  c.frame_ended(shown);
+  c.frame_ended(shown);
+  RenderOutput out_c;
+  c.finish(out_c);
+  CHECK(handed == std::vector<size_t>{0, 1});
+  CHECK(reads == 4);
+  CHECK(out_c.per_frame.empty());
 }
 
 // girtd accuracy's levels come from the registry's capabilities: the list

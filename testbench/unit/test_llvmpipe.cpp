@@ -25,7 +25,8 @@ namespace {
 
 LlvmpipeComparison against_llvmpipe(const std::string& backend, const Params& p, const Trace& trace,
                                     const LlvmpipeFrame& l) {
-  const RenderOutput out = render_trace(backend_named(backend), trace, p, {});
+  FrameSource input(trace);
+  const RenderOutput out = render_frames(backend_named(backend), input, p, {});
   const LlvmpipeComparison c =
       compare_with_llvmpipe(trace.frames[0].triangles, out.shown, out.z, l, static_cast<uint16_t>(p.depth_clear));
   std::printf("%s (D %d fraction bits) against llvmpipe: coverage differs on %llu of %llu px (%.4f %%); colour > 1 LSB "

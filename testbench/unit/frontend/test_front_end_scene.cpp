@@ -117,7 +117,8 @@ TEST_CASE("end to end: lit sphere and cube, eight pixels within 2 LSB", "[fronte
   frame.settings.q = 0;  // no fringe: the pixels sampled are interior anyway
   frame.triangles = fe.run_frame(scene(), frame.settings.window);
   trace.frames.push_back(frame);
-  const RenderOutput out = render_trace(backend_named("golden"), trace, params, RenderOptions{});
+  FrameSource input(trace);
+  const RenderOutput out = render_frames(backend_named("golden"), input, params, RenderOptions{});
 
   struct Named {
     const char* name;

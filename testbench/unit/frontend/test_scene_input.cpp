@@ -197,8 +197,8 @@ TEST_CASE("scene: names with / and ~ are plain names", "[frontend]") {
   CHECK(error_of([&] { read_scene(bad, Params::defaults()); }) == bad + ":3: \"materials/a/b/n\" = 201 is outside 1..200");
 }
 
-TEST_CASE("scene: frames x polygon corners is capped before anything is placed", "[frontend]") {
-  // A 100 x 100 grid of quads: 40,000 corners; 751 frames place 30,040,000 > 30,000,000.
+TEST_CASE("scene: a frame's polygon corners are capped before anything is placed", "[frontend]") {
+  // A 100 x 100 grid of quads: 40,000 corners; 751 of them in a frame place 30,040,000 > 30,000,000.
   std::ostringstream grid;
   for (int j = 0; j <= 100; ++j)
     for (int i = 0; i <= 100; ++i) grid << "v " << i << " " << j << " 0\n";
@@ -208,14 +208,25 @@ TEST_CASE("scene: frames x polygon corners is capped before anything is placed",
       grid << "f " << a << " " << a + 1 << " " << a + 102 << " " << a + 101 << "\n";
     }
   temp_file("grid.obj", grid.str());
-  std::string frames;
-  for (int f = 0; f < 751; ++f) frames += f ? ", {}" : "{}";
-  const std::string scene = temp_file(
-      "frames.json", "{\"girtd_scene\": 1,\n \"models\": [{\"file\": \"girtd_frontend_test_grid.obj\"}],\n \"frames\": [" +
-                         frames + "]}\n");
+  std::string models;
+  for (int m = 0; m < 751; ++m)
+    models += std::string(m ? ", " : "") + "{\"name\": \"g" + std::to_string(m) + "\", \"file\": \"girtd_frontend_test_grid.obj\"}";
+  const std::string scene =
+      temp_file("frames.json", "{\"girtd_scene\": 1,\n \"models\": [" + models + "],\n \"frames\": [{}, {}]}\n");
   CHECK(error_of([&] { read_scene(scene, Params::defaults()); }) ==
-        scene + ":3: 751 frames x 40000 polygon corners is more than the 30000000 corners a scene may place: use fewer "
-                "frames or smaller models");
+        scene + ":2: 30040000 polygon corners in a frame is more than the 30000000 a scene may place: use smaller models "
+                "or fewer of them");
+  // Frames are placed one at a time: 100,000 frames of the grid are taken (the cap is the frame's, not the scene's).
+  std::string frames;
+  for (int f = 0; f < 100000; ++f) frames += f ? ", {}" : "{}";
+  const std::string long_scene = temp_file(
+      "long.json", "{\"girtd_scene\": 1,\n \"models\": [{\"file\": \"girtd_frontend_test_grid.obj\"}],\n \"frames\": [" +
+                       frames + "]}\n");
+  FrameSource source = open_scene(long_scene, Params::defaults());
+  CHECK(source.frames() == 100000);
+  CHECK(source.items() == 100000);  // an object a frame
+  CHECK(source.take(0).world.polygons.size() == 10000);
+  CHECK(source.take(1).world.polygons.size() == 10000);
 }
 
 TEST_CASE("scene: models, materials, camera and frames, unknown keys fail with their line", "[frontend]") {
