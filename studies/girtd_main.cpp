@@ -13,6 +13,7 @@
 #include "accuracy/accuracy_levels.hpp"
 #include "bench/bench_command.hpp"
 #include "bench/golden_speed_bench.hpp"
+#include "bench/animation_bench.hpp"
 #include "bench/scale_bench.hpp"
 #include "claims/claims_command.hpp"
 #include "cli/commands.hpp"
@@ -101,19 +102,27 @@ int main(int argc, char** argv) {
   CLI::Option* leave_out = bench->add_flag("--leave-out", ba.leave_out_only,
                   "only the culling (modeled) and pruning (wall time, median of 5) tables, and what pruning could save at most")
       ->excludes(pipeline_only);
-  bench->add_flag("--speed", ba.speed_only,
+  CLI::Option* speed = bench->add_flag("--speed", ba.speed_only,
                   "only the simulator's speed tables (rtl DDA clocks per wall second against the DDA alone; golden against single-threaded llvmpipe on 20,000 random 200-pixel triangles; what report.html's series cost, the median ratio over pairs of renders)")
       ->excludes(pipeline_only)
       ->excludes(leave_out);
   CLI::Option* scale = bench->add_flag("--scale", ba.scale_only,
                   "only the simulator's cost against the input's size: generated meshes (default 10^4, 10^5 and 10^6 "
                   "triangles) rendered end to end on golden and approx beside assimp's import alone (elapsed time, peak "
-                  "memory, growth exponents)")
+                  "memory, growth exponents), and a turning sphere's long animation against a short one (peak memory)")
       ->excludes(pipeline_only)
-      ->excludes(leave_out);
+      ->excludes(leave_out)
+      ->excludes(speed);
   ba.scale_sizes = kDefaultScaleSizes;
   bench->add_option("--sizes", ba.scale_sizes, "with --scale: the meshes' triangle counts")
       ->check(CLI::Range(100L, 20000000L))
+      ->needs(scale);
+  ba.animation_frames = {kShortAnimation, kLongAnimation};
+  bench->add_option("--frames", ba.animation_frames,
+                    "with --scale: the animation's short and long frame counts (rtl draws at most " +
+                        std::to_string(kLongAnimationRtl) + " frames)")
+      ->expected(2)
+      ->check(CLI::Range(1L, 100000L))
       ->needs(scale);
   bench->add_option("--runs", ba.scale_runs, "with --scale: runs per size (medians)")
       ->check(CLI::Range(1, 50))
@@ -206,7 +215,10 @@ int main(int argc, char** argv) {
         if (const auto v = needed_rtl_variant(p)) lines.push_back(rtl_variant_plan_line(*v, p));
       }
       if (*bench && ba.speed_only) lines.push_back(golden_speed_bench_plan_line(ba.out));
-      if (*bench && ba.scale_only) lines = scale_bench_plan_lines(ba.out, ba.scale_sizes);
+      if (*bench && ba.scale_only) {
+        lines = scale_bench_plan_lines(ba.out, ba.scale_sizes);
+        for (const std::string& l : animation_bench_plan_lines(ba.out)) lines.push_back(l);
+      }
       if (*accuracy) lines = plan_accuracy(ac);
       if (*sweep) lines = plan_sweep(sw);
       for (const std::string& line : lines) std::printf("%s\n", line.c_str());

@@ -24,6 +24,7 @@
 #include "bench/rtl_speed_bench.hpp"
 #include "bench/series_cost_bench.hpp"
 #include "bench/pipeline_bench.hpp"
+#include "bench/animation_bench.hpp"
 #include "bench/scale_bench.hpp"
 #include "io/image_compare.hpp"
 #include "io/workload_list.hpp"
@@ -84,15 +85,18 @@ int run_bench(const BenchArgs& a) {
   if (a.scale_only) {
     if (!config.empty()) throw InputError("--config", 0, "bench --scale renders with the default configuration");
     const ScaleBench sb = run_scale_bench(out_dir, a.scale_sizes, a.scale_runs);
-    if (sb.failures) {  // nothing half-measured for docs --record to take
-      std::printf("%d failure(s); nothing written\n", sb.failures);
+    const AnimationBench ab = sb.failures ? AnimationBench{}
+                                          : run_animation_bench(out_dir, a.animation_frames.at(0), a.animation_frames.at(1));
+    if (sb.failures || ab.failures) {  // nothing half-measured for docs --record to take
+      std::printf("%d failure(s); nothing written\n", sb.failures + ab.failures);
       return 1;
     }
     OutputSet files(out_dir);
-    files.add_text("scale.json", nlohmann::json{{"measured_on", measured_on()}, {"scale", sb.rows}}.dump(2) + "\n");
-    files.add_text("scale.md", "# girtd bench --scale\n" + sb.markdown);
+    files.add_text("scale.json",
+                   nlohmann::json{{"measured_on", measured_on()}, {"scale", sb.rows}, {"animation", ab.rows}}.dump(2) + "\n");
+    files.add_text("scale.md", "# girtd bench --scale\n" + sb.markdown + ab.markdown);
     files.commit();
-    std::fputs(sb.markdown.c_str(), stdout);
+    std::fputs((sb.markdown + ab.markdown).c_str(), stdout);
     std::printf("0 failure(s); wrote %s\n", files.path("scale.md").c_str());
     return 0;
   }

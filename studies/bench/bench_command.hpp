@@ -16,6 +16,7 @@ struct BenchArgs {
   bool scale_only = false;          // the simulator's cost against the input's size (scale_bench.hpp)
   std::vector<long> scale_sizes;    // its meshes' triangle counts
   int scale_runs = 3;
+  std::vector<long> animation_frames;  // its animation's short and long frame counts (animation_bench.hpp)
   bool bless = false;          // rewrite the stored expectations from this run (cli/expectations.hpp)
   bool option_matrix = false;  // the pipeline table under each memory-side option
   std::vector<std::string> inputs;  // the pipeline table's (default: the sample workloads)

@@ -5,12 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <utility>
 
 #include "bench/bench_stats.hpp"
+#include "bench/user_render.hpp"
 #include "io/json_file.hpp"
 #include "io/subprocess.hpp"
 #include "io/text_format.hpp"
@@ -25,7 +25,6 @@ namespace {
 // golden; the growth exponents at most kMaxExponent.
 constexpr double kGoldenOverAssimpTime = 3.0, kGoldenOverAssimpMemory = 2.0, kApproxOverGolden = 2.0;
 constexpr double kMaxExponent = 1.1;
-constexpr double kMargin = 0.9;  // "met" needs the median 10 % past the bar
 
 std::string mesh_path(const std::string& out_dir, long n) { return out_dir + "/scale/sphere_" + std::to_string(n) + ".obj"; }
 
@@ -45,10 +44,6 @@ double exponent(const std::vector<double>& x, const std::vector<double>& y) {
   return d > 0 ? (n * sxy - sx * sy) / d : 0;
 }
 
-const char* verdict(double ratio, double bar) {
-  return ratio <= kMargin * bar ? "met" : ratio <= bar ? "within the bar, not 10 % past it" : "not met";
-}
-
 }  // namespace
 
 std::vector<std::string> scale_bench_plan_lines(const std::string& out_dir, const std::vector<long>& sizes) {
@@ -63,10 +58,7 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
   fs::create_directories(dir);
   const std::string self = self_executable();
   const std::string yardstick = (fs::path(self).parent_path() / "girtd_assimp_import").string();
-  // As a user runs it: the driver (it checks the build is up to date first)
-  // when it started this bench, else this executable.
-  const char* driver = std::getenv("GIRTD_DRIVER");
-  const std::string render = driver && *driver ? driver : self;
+  const std::string render = user_render_program();
   auto fail = [&b](const std::string& what) {
     std::fprintf(stderr, "\nbench: %s\n", what.c_str());
     ++b.failures;
@@ -163,12 +155,12 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
     largest[name] = fit(*y, true);
   }
   b.rows = {{"sizes", b.rows}, {"exponents", fits}, {"exponents_two_largest", largest}, {"runs", runs},
-            {"timed", driver && *driver ? "tools/girtd render" : "girtd render"}};
+            {"timed", user_render_name()}};
 
   std::string& md = b.markdown;
   md += "\n## The simulator at scale: generated UV spheres, " + std::to_string(runs) + " runs each\n\n";
   md += std::string("Each run, in turn: assimp's import alone (`girtd_assimp_import`: `ReadFile` with no post-processing), then `") +
-        (driver && *driver ? "tools/girtd render" : "girtd render") +
+        user_render_name() +
         " FILE --backend golden`, then the same on approx, each in its own process. Elapsed: start to exit; peak: "
         "the largest process's resident memory (the simulator or its import child; the child has ended before the "
         "simulator's own peak, after the import). Medians over the runs; the ratios are the medians of each run's "
@@ -205,11 +197,11 @@ ScaleBench run_scale_bench(const std::string& out_dir, const std::vector<long>& 
     md += "\nAt " + std::to_string(long(tris.back())) + " triangles, against the bars (met: the median at least 10 % past the bar):\n\n";
     md += "| bar | measured | verdict |\n|---|---|---|\n";
     md += "| golden time at most " + format_numbers("%.0f", kGoldenOverAssimpTime) + "x assimp's | " + format_numbers("%.2fx", last_time_ratio) +
-          " | " + verdict(last_time_ratio, kGoldenOverAssimpTime) + " |\n";
+          " | " + bar_verdict(last_time_ratio, kGoldenOverAssimpTime) + " |\n";
     md += "| golden peak memory at most " + format_numbers("%.0f", kGoldenOverAssimpMemory) + "x assimp's | " +
-          format_numbers("%.2fx", last_memory_ratio) + " | " + verdict(last_memory_ratio, kGoldenOverAssimpMemory) + " |\n";
+          format_numbers("%.2fx", last_memory_ratio) + " | " + bar_verdict(last_memory_ratio, kGoldenOverAssimpMemory) + " |\n";
     md += "| approx time at most " + format_numbers("%.0f", kApproxOverGolden) + "x golden's | " + format_numbers("%.2fx", last_approx_ratio) +
-          " | " + verdict(last_approx_ratio, kApproxOverGolden) + " |\n";
+          " | " + bar_verdict(last_approx_ratio, kApproxOverGolden) + " |\n";
     if (tris.size() >= 2)
       md += "| growth exponents at most " + format_numbers("%.1f", kMaxExponent) + " | " + format_numbers("%.2f", worst) +
             " (the largest of golden's and approx's, either fit) | " +

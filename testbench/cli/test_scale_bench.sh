@@ -25,8 +25,9 @@ for t in f:
     assert sum(n[k] * centre[k] for k in range(3)) > 0, t  # outward: the normal points away from the centre
 PY
 
-# 2. The bench through the driver, which makes the meshes first.
-"$RUN" bench --scale --sizes 300 1200 --runs 1 --out "$TMP/sb" > "$TMP/log" 2>&1 && ok || { bad "bench --scale failed"; cat "$TMP/log"; }
+# 2. The bench through the driver, which makes the meshes first; the
+#    animation part at 2 and 6 frames (rtl too: under its cap of 100).
+"$RUN" bench --scale --sizes 300 1200 --runs 1 --frames 2 6 --out "$TMP/sb" > "$TMP/log" 2>&1 && ok || { bad "bench --scale failed"; cat "$TMP/log"; }
 [[ -f "$TMP/sb/scale/sphere_300.obj" && -f "$TMP/sb/scale/sphere_1200.obj" ]] && ok || bad "the driver made no meshes"
 # make_mesh picks R with 2R(R-1) nearest: 312 (R 13) and 1200 (R 25).
 jq -e '[.scale.sizes[].triangles] == [312, 1200]' "$TMP/sb/scale.json" >/dev/null && ok || bad "triangle counts: $(jq -c '[.scale.sizes[].triangles]' "$TMP/sb/scale.json")"
@@ -34,6 +35,9 @@ jq -e '.scale.sizes | all(.assimp.elapsed_s > 0 and .golden.peak_mb > 0 and .app
 jq -e '.scale.exponents | has("golden_time") and has("approx_memory")' "$TMP/sb/scale.json" >/dev/null && ok || bad "no fitted exponents"
 jq -e '.scale.timed == "tools/girtd render"' "$TMP/sb/scale.json" >/dev/null && ok || bad "not timed through the driver"
 grep -q "| golden time at most 3x assimp's |" "$TMP/sb/scale.md" && ok || bad "scale.md lacks the bars"
+jq -e '[.animation[] | [.backend, .short.frames, .long.frames]] == [["golden", 2, 6], ["approx", 2, 6], ["rtl", 2, 6]]' "$TMP/sb/scale.json" >/dev/null && ok || bad "animation rows: $(jq -c '.animation' "$TMP/sb/scale.json")"
+jq -e '.animation | all(.short.peak_mb > 0 and .long.peak_mb > 0 and .long_over_short_peak > 0)' "$TMP/sb/scale.json" >/dev/null && ok || bad "an animation run lacks its peak"
+grep -q "## Long animations" "$TMP/sb/scale.md" && ok || bad "scale.md lacks the animation table"
 
 # 3. A long render shows its progress on a terminal, each step with its
 #    time left: the model's reading (in the import's child), the front end,
@@ -51,7 +55,9 @@ for step in "reading big.obj: [0-9]+ %" "front end: [0-9]+/800112 polygons \([0-
 done
 grep -qE "about [0-9]+ s left" "$TMP/lines" && ok || bad "no time left on the progress line"
 
-# 4. --sizes without --scale is refused.
-"$GIRTD" bench --sizes 300 2> "$TMP/err"; rc=$?
-[[ $rc -ne 0 ]] && ok || bad "--sizes without --scale was taken"
+# 4. --sizes and --frames without --scale are refused, and --scale with --speed.
+for args in "--sizes 300" "--frames 2 6" "--scale --speed"; do
+  "$GIRTD" bench $args 2> "$TMP/err"; rc=$?
+  [[ $rc -ne 0 ]] && ok || bad "bench $args was taken"
+done
 finish

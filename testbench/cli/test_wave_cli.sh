@@ -114,6 +114,11 @@ done
   2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 && ! -e "$TMP/b5.fst" && ! -e "$TMP/b5" ]] && grep -q "recorded nothing" "$TMP/err" && ok \
   || bad "window after the run: exit $rc"
+# The same with --frames all: each frame's PNG was written as the frame
+# ended, and goes with the failed run (nothing half-written, no folder).
+"$GIRTD" render traces/equilateral_200.trace --backend rtl --frames all --wave "$TMP/b5a.fst" --wave-window 1s: \
+  --out "$TMP/b5a" 2> /dev/null; rc=$?
+[[ $rc -eq 2 && ! -e "$TMP/b5a" ]] && ok || bad "--frames all after a failed run: exit $rc, left: $(ls -A "$TMP/b5a" 2>&1)"
 touch "$TMP/afile"
 "$GIRTD" render traces/equilateral_200.trace --backend rtl --wave "$TMP/afile/w.fst" --out "$TMP/b6" 2> "$TMP/err"; rc=$?
 [[ $rc -eq 2 && ! -e "$TMP/b6" ]] && ok || bad "waveform under a file: exit $rc"
