@@ -38,6 +38,10 @@ def main():
     docs = list(ROOT.rglob("README.md")) + list((ROOT / "docs").glob("*.md"))
     files = [pathlib.Path(a).resolve() for a in args[1:]] or sorted(
         p for p in docs if not any(part.startswith("build") or part == "node_modules" for part in p.relative_to(ROOT).parts))
+    for path in files:  # bad usage: one line, exit 2
+        if not path.is_file():
+            print(f"generated_docs.py: {path}: no such file (usage: tools/girtd docs [--check] [FILE...])", file=sys.stderr)
+            return 2
     stale = []
     for path in files:
         text = path.read_text()

@@ -114,6 +114,10 @@ Params build(const ConfigLayers& layers) {
     if (fill != "inclusive" && fill != "top_left") r.fail("preparer.fill_rule", "must be \"inclusive\" or \"top_left\"");
     p.fill_top_left = fill == "top_left";
     p.edge_flags = r.flag("preparer.edge_flags");
+    const std::string steep = r.text("preparer.steep_attributes");
+    if (steep != "as_computed" && steep != "limited")
+      r.fail("preparer.steep_attributes", "must be \"as_computed\" or \"limited\"");
+    p.steep_limited = steep == "limited";
 
     p.cull_objects = r.flag("culling.objects");
     const std::string back = r.text("culling.back_faces");

@@ -59,6 +59,7 @@ struct Params {
   bool far_edges_constant;  // an edge whose line misses the pixel box goes out as a constant: no D wraps
   bool fill_top_left;       // a shared edge is evaluated alike from both sides; its ties go to one side
   bool edge_flags;          // a triangle's interior edges (Triangle::interior_edges) get no AA fringe
+  bool steep_limited;       // an attribute steep enough to leave its EP over the walk is cut across: no wraps
 
   // Culling in front of lighting (config `culling`; off in the thesis'
   // design, on in config/presets/culling.json).

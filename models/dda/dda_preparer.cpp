@@ -5,6 +5,7 @@
 
 #include "common/fixed_point.hpp"
 #include "common/triangle_setup.hpp"
+#include "dda/steep_attributes.hpp"
 
 namespace girtd {
 namespace {
@@ -129,10 +130,15 @@ PrepareResult DdaPreparer::prepare(const Triangle& t, const FrameSettings& f, Dd
   const Ep attr_ep[kAttrCount] = {kEpR, kEpG, kEpB, kEpT, kEpZ};
   const FixFormat* attr_fmt[kAttrCount] = {&params_.ep_color, &params_.ep_color, &params_.ep_color,
                                            &params_.ep_t, &params_.ep_z};
+  const double cx = (s.v[0].x + s.v[1].x + s.v[2].x) / 3, cy = (s.v[0].y + s.v[1].y + s.v[2].y) / 3;
   for (int a = 0; a < kAttrCount; ++a) {
     const AttributePlane& pl = s.attr[a];
     const double k = attr_scale[a];
-    convert(k * pl.at(x0, y0), k * pl.dx, k * pl.dy, *attr_fmt[a], out.ep[attr_ep[a]]);
+    SteepPlane plane{k * pl.at(x0, y0), k * pl.dx, k * pl.dy};
+    if (params_.steep_limited &&
+        limit_steep_plane(plane, k * pl.at(cx, cy), *attr_fmt[a], WalkBox{x0, y0, box, f.q}, s))
+      ++counts_.limited_planes;
+    convert(plane.v, plane.dx, plane.dy, *attr_fmt[a], out.ep[attr_ep[a]]);
   }
   ++counts_.prepared;
   return PrepareResult::kReady;

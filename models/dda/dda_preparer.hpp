@@ -21,6 +21,7 @@ struct PreparerCounts {
   uint64_t prepared = 0, degenerate = 0, off_window = 0, no_lattice_row = 0;
   std::array<uint64_t, kEpCount> clamps{};  // start values and derivatives that did not fit the EP
   uint64_t constant_edges = 0;  // preparer.far_edges constant: edges sent as constants
+  uint64_t limited_planes = 0;  // preparer.steep_attributes limited: attribute planes cut across
   uint64_t clamped_values() const {
     uint64_t n = 0;
     for (uint64_t c : clamps) n += c;

@@ -55,5 +55,7 @@ OpCount depth_sort_ops(size_t triangles, uint64_t comparisons);
 // preparer's options (config `preparer`): far edges as constants, the
 // top-left fill rule. Edge flags cost no arithmetic.
 OpCount preparer_ops(const Params& p);
+// One attribute plane cut by preparer.steep_attributes limited, on top.
+OpCount steep_limit_ops();
 
 }  // namespace girtd

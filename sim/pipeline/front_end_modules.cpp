@@ -162,10 +162,12 @@ sc_core::sc_fifo<Token<DdaParams>>& PipelineElaboration::preparer(sc_fifo<Token<
       "preparer", in,
       [this](size_t frame, const Triangle& t, Work<DdaParams>& w) {
         std::optional<DdaParams> d(std::in_place);
+        const uint64_t limited_before = preparer_->counts().limited_planes;
         if (preparer_->prepare(t, settings_[frame], *d) != PrepareResult::kReady) d.reset();
+        const double cuts = double(preparer_->counts().limited_planes - limited_before) * steep_limit_ops().flops();
         if (tap_ && tap_->level() == TraceLevel::kTriangle) tap_->write(t);
         if (tap_ && tap_->level() == TraceLevel::kDda && d) tap_->write(*d);
-        w.push_back({preparer_ops(p_).flops(), std::move(d)});
+        w.push_back({preparer_ops(p_).flops() + cuts, std::move(d)});
       },
       [this](size_t frame, Work<DdaParams>&) {
         if (tap_) tap_->begin_frame(settings_[frame]);

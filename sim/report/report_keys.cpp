@@ -222,6 +222,10 @@ std::vector<ReportKey> make_keys() {
                    &PreparerCounts::off_window),
       preparer_key("constant_edges", "edges sent as constants (`preparer.far_edges` constant: the line misses the pixel box)",
                    &PreparerCounts::constant_edges),
+      preparer_key("limited_planes",
+                   "attribute planes cut across their triangle's longest edge (`preparer.steep_attributes` limited: "
+                   "the EP would have left its format in the pixel box the DDA walks)",
+                   &PreparerCounts::limited_planes),
       preparer_key("no_lattice_row", "triangles crossing no pixel row", &PreparerCounts::no_lattice_row),
       key("preparer.clamped_values", "count", "start values or derivatives that did not fit their EP (per EP: "
           "`numerics`)", kHardware, [](auto& r) { return json(r.s.preparer->clamped_values()); }),

@@ -239,11 +239,82 @@ std::vector<StressCase> limits() {
   return out;
 }
 
+// Fine meshes: thousands of needle and sub-pixel triangles whose colour and
+// depth swing over their whole range across a fraction of a pixel (what a
+// scanner's or a CAD export's finely tessellated model gives near its poles
+// and silhouettes).
+std::vector<StressCase> fine() {
+  std::vector<StressCase> out;
+  for (double q : {0.0, 1.0}) {
+    // A fan of 3,000 needles round (512, 512), 200 px long: 0.42 px wide at the rim.
+    std::vector<Triangle> fan;
+    const int n = 3000;
+    for (int k = 0; k < n; ++k) {
+      const double a0 = 2 * kPi * k / n, a1 = 2 * kPi * (k + 1) / n, c = k % 2 ? 255 : 0, z = k % 2 ? 65534 : 0;
+      fan.push_back(tri(vtx(512, 512, 32767, 128, 128, 128), vtx(512 + 200 * std::cos(a0), 512 + 200 * std::sin(a0), z, c, 255 - c, c),
+                        vtx(512 + 200 * std::cos(a1), 512 + 200 * std::sin(a1), 65534 - z, 255 - c, c, 255 - c)));
+    }
+    // A 64 x 64 grid of 0.4-px cells (8,192 sub-pixel triangles), every
+    // corner's colour and depth drawn from the whole range.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> colour(0, 255), depth(0, 65534);
+    std::vector<Vertex> corner;
+    for (int j = 0; j <= 64; ++j)
+      for (int i = 0; i <= 64; ++i)
+        corner.push_back(vtx(300.3 + 0.4 * i, 400.7 + 0.4 * j, depth(rng), colour(rng), colour(rng), colour(rng)));
+    std::vector<Triangle> grid;
+    for (int j = 0; j < 64; ++j)
+      for (int i = 0; i < 64; ++i) {
+        const Vertex &a = corner[j * 65 + i], &b = corner[j * 65 + i + 1], &c = corner[(j + 1) * 65 + i + 1],
+                     &d = corner[(j + 1) * 65 + i];
+        grid.push_back(tri(a, b, c));
+        grid.push_back(tri(a, c, d));
+      }
+    out.push_back(trace_case("fine", "fan3000_q" + label(q),
+                             "a fan of 3,000 needles 200 px long, colour 0..255 and Z 0..65534 across each, Q " + label(q),
+                             q == 1, fan, q));
+    out.push_back(trace_case("fine", "grid64_q" + label(q),
+                             "a 64 x 64 grid of 0.4-px cells, every corner's colour and Z drawn from the whole range, Q " +
+                                 label(q),
+                             q == 0, grid, q));
+  }
+  // A UV sphere of 100 rings (19,800 triangles) through the front end,
+  // framed to fill the screen: needles at the poles, one on the silhouette.
+  std::string vertices = "[0, 1, 0]", polygons;
+  const int rings = 100;
+  auto ring = [&](int i, int j) { return 1 + (i - 1) * rings + j % rings; };
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < rings; ++j) {
+      const double th = kPi * i / rings, ph = 2 * kPi * j / rings;
+      vertices += ", [" + number(std::sin(th) * std::cos(ph)) + ", " + number(std::cos(th)) + ", " +
+                  number(std::sin(th) * std::sin(ph)) + "]";
+    }
+  vertices += ", [0, -1, 0]";
+  const int south = 1 + (rings - 1) * rings;
+  auto face = [&](int a, int b, int c) {
+    polygons += (polygons.empty() ? "[" : ", [") + std::to_string(a) + ", " + std::to_string(b) + ", " + std::to_string(c) + "]";
+  };
+  for (int j = 0; j < rings; ++j) {
+    face(0, ring(1, j + 1), ring(1, j));
+    face(south, ring(rings - 1, j), ring(rings - 1, j + 1));
+  }
+  for (int i = 1; i < rings - 1; ++i)
+    for (int j = 0; j < rings; ++j) {
+      face(ring(i, j), ring(i, j + 1), ring(i + 1, j + 1));
+      face(ring(i, j), ring(i + 1, j + 1), ring(i + 1, j));
+    }
+  const std::string sphere = "{\"girtd_scene\": 1, \"q\": 1,\n \"models\": [{\"name\": \"sphere\", \"mesh\": "
+                             "{\"vertices\": [" + vertices + "], \"polygons\": [" + polygons + "]}}]}\n";
+  out.push_back({"fine", "fine_sphere19800", "a UV sphere of 19,800 triangles filling the screen, through the front end",
+                 true, true, sphere, {}});
+  return out;
+}
+
 }  // namespace
 
 const std::vector<std::string>& stress_families() {
-  static const std::vector<std::string> f = {"huge",  "sliver", "degenerate", "subpixel",  "steep",
-                                             "zrange", "order", "shared",     "nearplane", "limits"};
+  static const std::vector<std::string> f = {"huge",   "sliver", "degenerate", "subpixel",  "steep", "zrange",
+                                             "order",  "shared", "nearplane",  "limits",    "fine"};
   return f;
 }
 
@@ -258,6 +329,7 @@ std::vector<StressCase> stress_cases(const std::string& family, const std::strin
   if (family == "shared") return shared();
   if (family == "nearplane") return nearplane(models_dir);
   if (family == "limits") return limits();
+  if (family == "fine") return fine();
   throw std::logic_error("no stress family " + family);  // CLI11 admits stress_families() only
 }
 

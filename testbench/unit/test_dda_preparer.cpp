@@ -212,3 +212,43 @@ TEST_CASE("preparer: far edges as constants", "[preparer]") {
 }
 
 }  // namespace girtd
+
+namespace girtd {
+
+// A needle 0.2 px wide and 50 px long, red 0 and 255 at its base corners:
+// dR/dx = 255 / 0.2 = 1,275 per px, dR/dy = 0. As computed, d/dx does not
+// fit the colour EP (+-1,024: clamped) and the fringe wraps. Limited: the
+// longest edge runs from (100, 100) to the tip (100.1, 150), u = (0.002,
+// 1.0), so along it red rises 1,275 x 0.002 = 2.55 per px, and across it
+// (n = (-1.0, 0.002)) falls 1,275 per px. With Q = 1 the DDA may emit in
+// x 99..101 (the box) and rows 99..151; the centroid is (100.1, 116.67),
+// red 127.5. The corner (101, 151) binds: along +34.33 px (red +87.5),
+// across -0.831 px, so across is cut to (1,024 - 127.5 - 87.5) / 0.831 =
+// 973 per px (less the walk's rounding margin, 56 steps of half an LSB),
+// and d/dx = 973 x 1.0 + 2.55 x 0.002 = 973.
+TEST_CASE("preparer: steep attributes limited across a needle", "[preparer]") {
+  const Triangle needle = tri({{{100, 100, 0}, {100.2, 100, 255}, {100.1, 150, 127.5}}});
+  const Params as_computed = Params::defaults();
+  const Params limited = Params::with_overrides({{"preparer", {{"steep_attributes", "limited"}}}}, "test");
+  auto affected = [&needle](const Params& p, DdaParams& d, DdaPreparer& prep) {
+    REQUIRE(prep.prepare(needle, frame(1), d) == PrepareResult::kReady);
+    return DdaEngine(p).run(d, [](const DdaEmit&) {}).numerics.triangles_affected;
+  };
+  DdaParams d;
+  DdaPreparer plain(as_computed);
+  CHECK(affected(as_computed, d, plain) == 1);
+  CHECK(d.clamped);
+  CHECK(d.ep[kEpR].dx == as_computed.ep_color.raw_max());
+
+  DdaPreparer cut(limited);
+  CHECK(affected(limited, d, cut) == 0);
+  CHECK_FALSE(d.clamped);
+  CHECK(cut.counts().limited_planes == 1);  // G, B, T and Z are flat
+  const double dx = double(d.ep[kEpR].dx) / 512, dy = double(d.ep[kEpR].dy) / 512;
+  CHECK(dx == Approx(973).margin(1));
+  const double cx = (100 + 100.2 + 100.1) / 3, cy = (100 + 100 + 150) / 3.0;
+  const double at_centroid = double(d.ep[kEpR].v) / 512 + dx * (cx - d.x0) + dy * (cy - d.y0);
+  CHECK(at_centroid == Approx(127.5).margin(0.05));
+}
+
+}  // namespace girtd
