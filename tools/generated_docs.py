@@ -40,7 +40,7 @@ def main():
         p for p in docs if not any(part.startswith("build") or part == "node_modules" for part in p.relative_to(ROOT).parts))
     for path in files:  # bad usage: one line, exit 2
         if not path.is_file():
-            print(f"generated_docs.py: {path}: no such file (usage: tools/girtd docs [--check] [FILE...])", file=sys.stderr)
+            print(f"generated_docs.py: {path}: not a file (usage: tools/girtd docs [--check] [FILE...])", file=sys.stderr)
             return 2
     stale = []
     for path in files:

@@ -130,13 +130,14 @@ PrepareResult DdaPreparer::prepare(const Triangle& t, const FrameSettings& f, Dd
   const Ep attr_ep[kAttrCount] = {kEpR, kEpG, kEpB, kEpT, kEpZ};
   const FixFormat* attr_fmt[kAttrCount] = {&params_.ep_color, &params_.ep_color, &params_.ep_color,
                                            &params_.ep_t, &params_.ep_z};
-  const double cx = (s.v[0].x + s.v[1].x + s.v[2].x) / 3, cy = (s.v[0].y + s.v[1].y + s.v[2].y) / 3;
+  const WalkBox walk{x0, y0, box, f.q};
+  std::optional<EmitRegion> region;  // preparer.steep_attributes limited: found once, for every plane
+  if (params_.steep_limited) region = emit_region(s, walk);
   for (int a = 0; a < kAttrCount; ++a) {
     const AttributePlane& pl = s.attr[a];
     const double k = attr_scale[a];
     SteepPlane plane{k * pl.at(x0, y0), k * pl.dx, k * pl.dy};
-    if (params_.steep_limited &&
-        limit_steep_plane(plane, k * pl.at(cx, cy), *attr_fmt[a], WalkBox{x0, y0, box, f.q}, s))
+    if (region && limit_steep_plane(plane, k * pl.at(region->centroid.x, region->centroid.y), *attr_fmt[a], walk, *region))
       ++counts_.limited_planes;
     convert(plane.v, plane.dx, plane.dy, *attr_fmt[a], out.ep[attr_ep[a]]);
   }

@@ -6,25 +6,56 @@
 namespace girtd {
 namespace {
 
-struct Point {
-  double x, y;
-};
+using Point = EmitRegion::Point;
 
 constexpr double kDError = 0.25;  // px: the D error of the longest walk (models/dda/README.md)
 
-// Where the DDA may emit: the triangle grown by `reach` at every edge,
-// clipped to the walk's box; its corners, and the start pixel (whose value
-// the register starts from), from `from`.
-std::vector<Point> emit_region(const TriangleSetup& s, const WalkBox& w, Point from) {
+// The value range the register may reach and its largest derivative, less
+// the rounding of the derivatives over the longest walk: an LSB a step,
+// twice the half LSB each rounded derivative can be off.
+struct Room {
+  double lo, hi, d_max;
+};
+
+Room room_of(const FixFormat& fmt, const WalkBox& w) {
+  const double lsb = 1.0 / static_cast<double>(fmt.one());
+  const double steps = (w.box.x1 - w.box.x0) + (w.box.y1 - w.y0) + 2;
+  const double drift = steps * lsb;
+  return {static_cast<double>(fmt.raw_min()) * lsb + drift, static_cast<double>(fmt.raw_max()) * lsb - drift,
+          static_cast<double>(fmt.raw_max()) * lsb};
+}
+
+bool fits(double centroid_value, double dx, double dy, const Room& room, const std::vector<Point>& corners) {
+  if (std::abs(dx) > room.d_max || std::abs(dy) > room.d_max) return false;
+  for (const Point& c : corners) {
+    const double at = centroid_value + dx * c.x + dy * c.y;
+    if (!(at >= room.lo && at <= room.hi)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+EmitRegion emit_region(const TriangleSetup& s, const WalkBox& w) {
+  EmitRegion r;
+  const std::array<Vertex, 3>& v = s.v;
+  r.centroid = {(v[0].x + v[1].x + v[2].x) / 3, (v[0].y + v[1].y + v[2].y) / 3};
+  double longest = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double ex = v[(i + 1) % 3].x - v[i].x, ey = v[(i + 1) % 3].y - v[i].y, len = std::hypot(ex, ey);
+    if (len > longest) longest = len, r.ux = ex / len, r.uy = ey / len;
+  }
+  // The triangle grown by `reach` at every edge: grown edges k-1 and k meet at the grown v[k].
   const double reach = w.q + kDError;
   std::vector<Point> poly;
-  for (int k = 0; k < 3; ++k) {  // grown edges k-1 and k meet at the grown v[k]
+  for (int k = 0; k < 3; ++k) {
     const EdgeEquation &e = s.edge[(k + 2) % 3], &f = s.edge[k];
     const double det = e.a * f.b - e.b * f.a;
-    if (det == 0) return {{double(w.x0) - from.x, double(w.y0) - from.y}};
+    if (det == 0) break;
     const double ce = e.c + reach, cf = f.c + reach;
     poly.push_back({(e.b * cf - f.b * ce) / det, (f.a * ce - e.a * cf) / det});
   }
+  if (poly.size() < 3) poly.clear();
   // Sutherland-Hodgman against the box's four sides: keep (x, y) with sx * x + sy * y <= lim.
   const double sides[4][3] = {{-1, 0, -double(w.box.x0)}, {1, 0, double(w.box.x1)}, {0, -1, -double(w.y0)},
                               {0, 1, double(w.box.y1)}};
@@ -40,63 +71,29 @@ std::vector<Point> emit_region(const TriangleSetup& s, const WalkBox& w, Point f
       }
     }
     poly = std::move(kept);
-    if (poly.empty()) break;
   }
-  poly.push_back({double(w.x0), double(w.y0)});
-  for (Point& p : poly) p = {p.x - from.x, p.y - from.y};
-  return poly;
+  poly.push_back({double(w.x0), double(w.y0)});  // the register starts from the start pixel's value
+  for (Point& p : poly) p = {p.x - r.centroid.x, p.y - r.centroid.y};
+  r.corners = std::move(poly);
+  return r;
 }
-
-// The value range the register may reach and its largest derivative, less
-// the rounding of the derivatives (half an LSB a step) over the longest walk.
-struct Room {
-  double lo, hi, d_max;
-};
-
-Room room_of(const FixFormat& fmt, const WalkBox& w) {
-  const double lsb = 1.0 / static_cast<double>(fmt.one());
-  const double steps = (w.box.x1 - w.box.x0) + (w.box.y1 - w.y0) + 2;
-  const double drift = steps * lsb;
-  return {static_cast<double>(fmt.raw_min()) * lsb + drift, static_cast<double>(fmt.raw_max()) * lsb - drift,
-          static_cast<double>(fmt.raw_max()) * lsb};
-}
-
-bool fits(double at_origin, double dx, double dy, const Room& room, const std::vector<Point>& corners) {
-  if (std::abs(dx) > room.d_max || std::abs(dy) > room.d_max) return false;
-  for (const Point& c : corners) {
-    const double at = at_origin + dx * c.x + dy * c.y;
-    if (!(at >= room.lo && at <= room.hi)) return false;
-  }
-  return true;
-}
-
-}  // namespace
 
 bool limit_steep_plane(SteepPlane& plane, double centroid_value, const FixFormat& fmt, const WalkBox& walk,
-                       const TriangleSetup& s) {
+                       const EmitRegion& region) {
   const Room room = room_of(fmt, walk);
-  const std::array<Vertex, 3>& v = s.v;
-  // From the centroid, whose value lies within the corners' (inside the room).
-  const Point c{(v[0].x + v[1].x + v[2].x) / 3, (v[0].y + v[1].y + v[2].y) / 3};
-  const std::vector<Point> corners = emit_region(s, walk, c);
-  if (fits(centroid_value, plane.dx, plane.dy, room, corners)) return false;
-  // u along the longest edge, n across it.
-  double ux = 1, uy = 0, longest = -1;
-  for (int i = 0; i < 3; ++i) {
-    const double ex = v[(i + 1) % 3].x - v[i].x, ey = v[(i + 1) % 3].y - v[i].y, len = std::hypot(ex, ey);
-    if (len > longest && len > 0) longest = len, ux = ex / len, uy = ey / len;
-  }
-  const double nx = -uy, ny = ux;
+  if (!(centroid_value >= room.lo && centroid_value <= room.hi)) return false;  // no cut can make it fit
+  if (fits(centroid_value, plane.dx, plane.dy, room, region.corners)) return false;
+  const double ux = region.ux, uy = region.uy, nx = -uy, ny = ux;
   double along = plane.dx * ux + plane.dy * uy, across = plane.dx * nx + plane.dy * ny;
   // The along part alone, cut until it fits (the centroid's value does).
-  for (const Point& k : corners) {
-    const double pa = k.x * ux + k.y * uy, at = centroid_value + along * pa;
-    if (at > room.hi) along *= (room.hi - centroid_value) / (along * pa);
-    else if (at < room.lo) along *= (room.lo - centroid_value) / (along * pa);
+  for (const Point& k : region.corners) {
+    const double step = along * (k.x * ux + k.y * uy), at = centroid_value + step;
+    if (at > room.hi) along *= (room.hi - centroid_value) / step;  // step > 0 here
+    else if (at < room.lo) along *= (room.lo - centroid_value) / step;  // step < 0 here
   }
   // Then each corner bounds the across part to an interval holding 0.
   double lo = -INFINITY, hi = INFINITY;
-  for (const Point& k : corners) {
+  for (const Point& k : region.corners) {
     const double pn = k.x * nx + k.y * ny;
     if (pn == 0) continue;
     const double base = centroid_value + along * (k.x * ux + k.y * uy);
@@ -108,7 +105,9 @@ bool limit_steep_plane(SteepPlane& plane, double centroid_value, const FixFormat
   double dx = along * ux + across * nx, dy = along * uy + across * ny;
   const double steepest = std::max(std::abs(dx), std::abs(dy));
   if (steepest > room.d_max) dx *= room.d_max / steepest, dy *= room.d_max / steepest;
-  plane = {centroid_value + dx * (walk.x0 - c.x) + dy * (walk.y0 - c.y), dx, dy};
+  const double v = centroid_value + dx * (walk.x0 - region.centroid.x) + dy * (walk.y0 - region.centroid.y);
+  if (!std::isfinite(v) || !std::isfinite(dx) || !std::isfinite(dy)) return false;
+  plane = {v, dx, dy};
   return true;
 }
 

@@ -5,11 +5,14 @@
 // triangle's longest edge cut until every value there fits, with a margin
 // for the rounding the walk adds up. Where the DDA may emit: every edge's
 // distance at least -(Q + 0.25 px, the D error of the longest walk), within
-// the pixel box.
-// The value at the triangle's centroid (within its corners' values) and the
-// derivative along the longest edge stay as computed; the start value
-// follows. Inside a needle (under a pixel across) the picture moves by at
-// most the triangle's own colour or depth spread across it.
+// the pixel box, and the start pixel.
+// The value at the triangle's centroid (within its corners' values) stays
+// as computed, and so does the derivative along the longest edge unless it
+// alone leaves the format (then it is cut too); the start value follows.
+// Inside a needle (under a pixel across) the picture moves by at most the
+// triangle's own colour or depth spread across it. A plane whose centroid
+// value does not fit the format (a format too narrow for the attribute's
+// range) is left as computed: its clamps and wraps are counted as ever.
 // Plain arithmetic in the preparer; the DDA and the RTL are unchanged.
 #pragma once
 
@@ -34,10 +37,22 @@ struct WalkBox {
   double q;
 };
 
-// `plane` (at the start pixel; `centroid_value`: the plane at the centroid
-// of the triangle `s`) limited for `fmt` over `walk`; returns false and
-// leaves it when it already fits.
+// What every plane of one triangle is tested against, found once.
+struct EmitRegion {
+  struct Point {
+    double x, y;
+  };
+  std::vector<Point> corners;  // of where the DDA may emit, and the start pixel; from the centroid
+  Point centroid;
+  double ux = 1, uy = 0;       // along the longest edge
+};
+
+EmitRegion emit_region(const TriangleSetup& s, const WalkBox& walk);
+
+// `plane` (at the start pixel; `centroid_value`: the plane at the region's
+// centroid) limited for `fmt`; returns false and leaves it when it already
+// fits, or cannot be made to.
 bool limit_steep_plane(SteepPlane& plane, double centroid_value, const FixFormat& fmt, const WalkBox& walk,
-                       const TriangleSetup& s);
+                       const EmitRegion& region);
 
 }  // namespace girtd

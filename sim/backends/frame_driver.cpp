@@ -16,17 +16,25 @@ FrameDriver::FrameDriver(std::string backend, const FrameSource& input, const Pa
   if (opt.dump) tap_ = std::make_unique<DumpTap>(*opt.dump, input.level(), input.path(), p);
 }
 
-void FrameDriver::start() { t0_ = std::chrono::steady_clock::now(); }
+void FrameDriver::start() {
+  t0_ = std::chrono::steady_clock::now();
+  untimed_s_ = 0;
+}
 
 double FrameDriver::wall_s() const {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count() - untimed_s_;
 }
 
 void FrameDriver::frame_ended(const std::function<RgbImage()>& shown) {
   const size_t frame = ended_++;
   if (!keep_frames_ && !on_frame_) return;
   RgbImage picture = shown();
-  if (on_frame_) on_frame_(frame, picture);
+  if (on_frame_) try {
+      untimed([&] { on_frame_(frame, picture); });
+    } catch (const InputError& e) {
+      failure_ = e;
+      on_frame_ = nullptr;
+    }
   if (keep_frames_) kept_.push_back(std::move(picture));
 }
 

@@ -10,11 +10,13 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "backends/dump_tap.hpp"
 #include "backends/render_session.hpp"
+#include "common/input_error.hpp"
 #include "config/params.hpp"
 #include "io/png_io.hpp"
 #include "io/frame_source.hpp"
@@ -31,11 +33,27 @@ class FrameDriver {
   size_t frames() const { return frames_; }
 
   void start();  // the simulation starts: set-up before it is not timed
+  // The simulation's wall time: since start(), less what ran untimed().
   double wall_s() const;
+  // Runs `work` (placing the input's frame, the untimed back ends' front
+  // end, writing a picture) off the simulation's clock.
+  template <typename Work>
+  auto untimed(Work&& work) {
+    const auto t0 = std::chrono::steady_clock::now();
+    struct Add {  // also when `work` throws
+      FrameDriver& d;
+      std::chrono::steady_clock::time_point t0;
+      ~Add() { d.untimed_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+    } add{*this, t0};
+    return work();
+  }
 
   // A frame ended with its swap; `shown` is read only when frames are kept
-  // or handed on (RenderOptions::on_frame).
+  // or handed on (RenderOptions::on_frame). Bad output there (an InputError:
+  // a picture that cannot be written) ends the run: failure() says so, and
+  // no frame is handed on after it.
   void frame_ended(const std::function<RgbImage()>& shown);
+  const std::optional<InputError>& failure() const { return failure_; }
   // How far the run is: `done` of `total` `unit` (polygons lit, triangles,
   // frames) in frame `frame`; `detail` follows. On the run's progress line
   // (io/progress_line.hpp).
@@ -53,6 +71,8 @@ class FrameDriver {
   std::unique_ptr<DumpTap> tap_;
   std::vector<RgbImage> kept_;
   std::chrono::steady_clock::time_point t0_;
+  double untimed_s_ = 0;
+  std::optional<InputError> failure_;
 };
 
 }  // namespace girtd

@@ -10,7 +10,7 @@ namespace girtd {
 void ReferenceBackend::begin(const FrameSource& input) {
   if (input.level() != TraceLevel::kTriangle && input.level() != TraceLevel::kPolygon)
     throw InputError(input.path(), 0,
-                     "the reference back end needs triangle-level input (a DDA trace holds no float triangles)");
+                     "the reference back end needs triangle- or polygon-level input (a DDA trace holds no float triangles)");
 }
 
 void ReferenceBackend::draw(const Triangle& t) {

@@ -1,6 +1,5 @@
 #include "backends/render_session.hpp"
 
-#include <chrono>
 #include <optional>
 #include <stdexcept>
 
@@ -35,19 +34,16 @@ RenderOutput render_frames(const BackendEntry& entry, FrameSource& input, const 
 
   driver.start();
   RenderOutput out;
-  double front_end_s = 0;  // not the back end's: wall_s leaves it out (report.json)
   for (size_t i = 0; i < n_frames; ++i) {
-    TraceFrame f = input.take(i);
+    TraceFrame f = driver.untimed([&] { return input.take(i); });  // a scene's frame is placed now
     if (dda_tap) tap->begin_frame(f.settings);
     else if (tap && tap->level() == TraceLevel::kPolygon) tap->frame(f);
     if (front_end) {
-      // The polygons go as soon as the front end is through with them, unless
-      // a polygon-level dump still writes them.
-      const auto t0 = std::chrono::steady_clock::now();
-      f.triangles = tap && tap->level() == TraceLevel::kPolygon ? front_end->run(f.world, f.settings)
-                                                                 : front_end->run_releasing(f.world, f.settings);
+      // The polygons go as soon as the front end is through with them (a
+      // polygon-level dump has written them already). Not the back end's:
+      // wall_s leaves it out (report.json).
+      f.triangles = driver.untimed([&] { return front_end->run_releasing(f.world, f.settings); });
       f.world = WorldFrame{};
-      front_end_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     if (tap && !dda_tap && tap->level() != TraceLevel::kPolygon) tap->frame(f);
     backend.begin_frame(f.settings);
@@ -59,11 +55,15 @@ RenderOutput render_frames(const BackendEntry& entry, FrameSource& input, const 
     backend.end_frame();
     ++out.stats.frames;
     driver.frame_ended([&] { return backend.shown(); });
+    if (driver.failure()) {  // a picture could not be written: nothing else is
+      out.problem = driver.failure();
+      return out;
+    }
     driver.progress(i, i + 1, n_frames, "frames");
   }
   backend.finish(out.stats);
   if (front_end) out.stats.frontend = front_end->counts();
-  out.stats.wall_s = driver.wall_s() - front_end_s;
+  out.stats.wall_s = driver.wall_s();
   out.shown = backend.shown();
   out.z = backend.z_plane();
   if (dda_tap) backend.tap_dda({});  // the tap dies with the driver

@@ -109,25 +109,29 @@ OpCount depth_sort_ops(size_t triangles, uint64_t comparisons) { return OpCount{
 // point: 2 mul + 2 add, 2 roundings as adds), D at that lattice point
 // (2 sub, 2 mul, 1 add), D at the start pixel from it (2 sub, 2 mul, 2 add)
 // and the tie test and bias (2 compares, 1 add): 3 x (22 add, 10 mul, 1 div).
-// Steep attributes: per attribute plane (5), its value at the walk's two
-// corners where it is least and most (2 mul, 2 add each), two compares, and
-// the derivatives against the format (2 compares): 5 x (4 mul + 8 add).
+// Steep attributes (models/dda/steep_attributes.cpp), upper bounds: the
+// region where the DDA may emit, once a triangle: the centroid (4 add, 2
+// mul), the longest edge (3 x (3 add, 2 mul, 1 sqrt), 3 compares, 2 div),
+// the grown corners (3 x (6 mul, 5 add, 2 div)), the clip to the box (4
+// sides x (7 points x 2 add, 2 crossings x (5 add, 2 mul, 1 div))), the
+// corners from the centroid (16 add); then per plane (5) its value at the
+// centroid (2 mul, 3 add) and the fit test (2 derivative compares, 8 corners
+// x (2 mul, 2 add, 2 compares)): 143 + 5 x 39 add, 42 + 5 x 18 mul, 16 div,
+// 3 sqrt.
 OpCount preparer_ops(const Params& p) {
   OpCount ops{115, 0, 0, 0};
   if (p.far_edges_constant) ops = ops + OpCount{6, 4, 0, 0} * 3;
   if (p.fill_top_left) ops = ops + OpCount{22, 10, 1, 0} * 3;
-  if (p.steep_limited) ops = ops + OpCount{8, 4, 0, 0} * 5;
+  if (p.steep_limited) ops = ops + OpCount{143, 42, 16, 3} + OpCount{39, 18, 0, 0} * 5;
   return ops;
 }
 
-// A plane cut (models/dda/steep_attributes.cpp), charged with each plane
-// cut though a triangle's planes share the first two lines (an upper bound):
-// the centroid (4 add, 2 mul); the longest edge (3 x (3 add, 2 mul, 1 sqrt),
-// 2 compares, 2 div); the parts along and across (4 mul, 2 add); the along
-// part at 4 corners (3 mul, 5 add, 1 div each); the across interval at 4
-// corners (3 mul, 8 add, 2 div each) and its clamp (2 compares); the new
-// derivatives (4 mul, 2 add), their bound (3 compares, 2 div) and the start
-// value (2 mul, 4 add).
-OpCount steep_limit_ops() { return OpCount{82, 42, 16, 3}; }
+// A plane cut (models/dda/steep_attributes.cpp), upper bounds: the parts
+// along and across the longest edge (4 mul, 2 add); the along part at 8
+// corners (4 mul, 5 add, 1 div each); the across interval at 8 corners (3
+// mul, 9 add, 2 div each) and its clamp (4 compares); the new derivatives
+// (4 mul, 2 add), their bound (3 compares, 1 div, 2 mul) and the start value
+// (2 mul, 4 add).
+OpCount steep_limit_ops() { return OpCount{127, 68, 25, 0}; }
 
 }  // namespace girtd

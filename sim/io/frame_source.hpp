@@ -24,6 +24,11 @@ class FrameSource {
   // first stage takes over all of them (a progress line's total).
   FrameSource(std::string path, TraceLevel level, std::vector<FrameSettings> settings, uint64_t items,
               std::vector<std::string> warnings, MakeFrame make);
+  // One run's: a copy would share the scene's placer (its auto-framed camera).
+  FrameSource(const FrameSource&) = delete;
+  FrameSource& operator=(const FrameSource&) = delete;
+  FrameSource(FrameSource&&) = default;
+  FrameSource& operator=(FrameSource&&) = default;
 
   const std::string& path() const { return path_; }
   TraceLevel level() const { return level_; }

@@ -25,7 +25,7 @@ OutputSet::~OutputSet() {
   if (committed_) return;
   std::error_code ec;
   for (const std::string& t : done_tmp_) fs::remove(t, ec);
-  if (made_dir_) fs::remove(dir_, ec);  // only when empty
+  for (const std::string& d : made_dirs_) fs::remove(d, ec);  // each only when empty
 }
 
 void OutputSet::add(const std::string& name, const std::function<void(const std::string&)>& write) {
@@ -44,9 +44,12 @@ void OutputSet::add_text(const std::string& name, const std::string& text) {
 void OutputSet::make_dir() {
   std::error_code ec;
   if (fs::is_directory(dir_, ec)) return;
+  std::vector<std::string> missing;
+  for (fs::path p = fs::absolute(dir_, ec); !p.empty() && !fs::exists(p, ec) && p != p.parent_path(); p = p.parent_path())
+    missing.push_back(p.string());
   fs::create_directories(dir_, ec);
   if (ec) throw InputError(dir_, 0, "cannot create output directory: " + ec.message());
-  made_dir_ = true;
+  made_dirs_ = std::move(missing);
 }
 
 std::string OutputSet::write_tmp(const std::string& name, const std::function<void(const std::string&)>& write) {

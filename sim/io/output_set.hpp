@@ -16,7 +16,7 @@ void check_output_dir(const std::string& dir, const char* option);
 class OutputSet {
  public:
   explicit OutputSet(std::string dir) : dir_(std::move(dir)) {}
-  // Uncommitted: the temporary files go, and the directory if this made it.
+  // Uncommitted: the temporary files go, and the directories this made.
   ~OutputSet();
   // `write(tmp_path)` writes the file's content to the temporary path, at commit().
   void add(const std::string& name, const std::function<void(const std::string&)>& write);
@@ -33,7 +33,7 @@ class OutputSet {
   std::string write_tmp(const std::string& name, const std::function<void(const std::string&)>& write);
 
   std::string dir_;
-  bool made_dir_ = false;
+  std::vector<std::string> made_dirs_;  // the deepest first
   std::vector<std::string> names_;
   std::vector<std::function<void(const std::string&)>> writers_;
   std::vector<std::string> done_names_, done_tmp_;  // written: each name's temporary file

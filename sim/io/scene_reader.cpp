@@ -44,16 +44,18 @@ struct CameraSpec {
 };
 
 // One frame as the scene file says it: read and checked before any is placed.
+// It holds only what it changes, so a scene's plan grows with its text.
 struct FramePlan {
   CameraSpec camera;
-  std::vector<Transform> transforms;  // each instance's
-  int source_line = 0;                // the frame's line (the polygons' source)
+  std::vector<std::pair<size_t, Transform>> moved;  // instance, its transform in this frame
+  int source_line = 0;                              // the frame's line (the polygons' source)
 };
 
 // Places a scene's frames one at a time, in order, as the run takes them.
 struct ScenePlacer {
   WorldFrame base;  // lights, back-face culling
   std::vector<Instance> instances;
+  std::vector<Transform> transforms;  // each instance's, the scene's own
   std::vector<FramePlan> frames;
   std::optional<double> focal;
   std::optional<Camera> auto_camera;  // framed once, on the first frame that needs it
@@ -61,7 +63,8 @@ struct ScenePlacer {
 
   TraceFrame place_frame(size_t f, const FrameSettings& settings) {
     const FramePlan& plan = frames.at(f);
-    for (size_t k = 0; k < instances.size(); ++k) instances[k].transform = plan.transforms[k];
+    for (size_t k = 0; k < instances.size(); ++k) instances[k].transform = transforms[k];
+    for (const auto& [k, t] : plan.moved) instances[k].transform = t;
     TraceFrame tf;
     tf.settings = settings;
     tf.world.cull_back_faces = base.cull_back_faces;
@@ -157,17 +160,17 @@ class SceneReader {
     for (size_t f = 0; f < n_frames; ++f) {
       const Ptr fp = root / "frames" / f;
       FramePlan plan{base_camera, {}, line(has_frames ? fp : root / "models")};
-      for (const Instance& in : instances) plan.transforms.push_back(in.transform);
       if (has_frames) {
         keys(at(fp), fp, {"camera", "models", "comment"});
         if (at(fp).contains("camera") && camera_name_.empty()) plan.camera = camera(fp / "camera");  // --camera wins
-        if (at(fp).contains("models")) frame_models(fp / "models", instances, plan.transforms);
+        if (at(fp).contains("models")) frame_models(fp / "models", instances, plan.moved);
       }
       placer->frames.push_back(std::move(plan));
     }
     if (params_.q_override) apply_q_override(settings, params_);
     placer->base = std::move(base);
     placer->focal = focal;
+    for (const Instance& in : instances) placer->transforms.push_back(in.transform);
     const uint64_t objects = n_frames * instances.size();  // place() makes one object an instance
     placer->instances = std::move(instances);
     return FrameSource(path_, TraceLevel::kPolygon, std::vector<FrameSettings>(n_frames, settings), objects,
@@ -433,8 +436,9 @@ class SceneReader {
                       std::to_string(kMaxSceneCorners) + " a scene may place: use smaller models or fewer of them");
   }
 
-  // A frame's transforms of the named models, over the scene's (`transforms`: each instance's).
-  void frame_models(const Ptr& ptr, const std::vector<Instance>& instances, std::vector<Transform>& transforms) const {
+  // A frame's transforms of the named models, each over the scene's.
+  void frame_models(const Ptr& ptr, const std::vector<Instance>& instances,
+                    std::vector<std::pair<size_t, Transform>>& moved) const {
     const json& m = at(ptr);
     if (!m.is_object()) fail(ptr, "a frame's \"models\" is an object: model name -> transform");
     for (auto it = m.begin(); it != m.end(); ++it) {
@@ -442,7 +446,9 @@ class SceneReader {
       auto in = std::find_if(instances.begin(), instances.end(), [&](const Instance& x) { return x.name == it.key(); });
       if (in == instances.end()) fail(mp, "no model named \"" + it.key() + "\"");
       keys(it.value(), mp, {"scale", "rotate_deg", "translate"});
-      transform_keys(mp, transforms[size_t(in - instances.begin())]);
+      Transform t = in->transform;
+      transform_keys(mp, t);
+      moved.emplace_back(size_t(in - instances.begin()), t);
     }
   }
 

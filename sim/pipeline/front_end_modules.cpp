@@ -2,6 +2,8 @@
 // the whole front end, triangles start at the window clip, DDA parameter
 // sets go straight to the back end. Each stage calls its models/ function
 // and charges its flops (sim/frontend/stage_costs).
+#include <stdexcept>
+
 #include "backends/front_end_runner.hpp"
 #include "common/triangle_setup.hpp"
 #include "pipeline/pipeline_elaboration.hpp"
@@ -136,6 +138,7 @@ void PipelineElaboration::build_from_polygons() {
 
 void PipelineElaboration::begin(FrontEndStages& s, size_t frame) {
   auto live = live_frames_.find(frame);  // the source stage made it before any stage begins it
+  if (live == live_frames_.end()) throw std::logic_error("a front-end stage began a frame no longer (or not yet) held");
   std::shared_ptr<const TraceFrame>& held = stage_frames_[&s];
   held = live->second.frame;  // the stage's previous frame goes, unless another stage still holds it
   if (++live->second.begun == fe_.size()) live_frames_.erase(live);

@@ -49,10 +49,12 @@ PipelineElaboration::PipelineElaboration(const BackendEntry& backend, FrameSourc
 }
 
 TraceFrame PipelineElaboration::take(size_t f) {
-  TraceFrame frame = input_.take(f);
-  DumpTap* tap = driver_.tap();
-  if (tap && tap->level() == input_.level()) tap->frame(frame);
-  return frame;
+  return driver_.untimed([&] {  // placing a scene's frame, dumping the input: not the simulation's time
+    TraceFrame frame = input_.take(f);
+    DumpTap* tap = driver_.tap();
+    if (tap && tap->level() == input_.level()) tap->frame(frame);
+    return frame;
+  });
 }
 
 RenderOutput PipelineElaboration::run() {
@@ -60,6 +62,11 @@ RenderOutput PipelineElaboration::run() {
   driver_.start();
   sc_core::sc_start();
   const double wall = driver_.wall_s();
+  if (driver_.failure()) {
+    RenderOutput failed;
+    failed.problem = driver_.failure();
+    return failed;
+  }
   if (!back_end_->finished())
     throw std::logic_error("the pipeline stopped before the back end saw the end of the run (a deadlock)");
   RenderOutput out;
@@ -82,7 +89,10 @@ void PipelineElaboration::build_back(sc_fifo<Token<DdaParams>>& in) {
   in_fifo_[&a] = &in_record;
   back_activity_ = &a;
   BackendStage::FrameDone done;
-  done = [this](size_t) { driver_.frame_ended([this] { return backend_->shown(); }); };
+  done = [this](size_t) {
+    driver_.frame_ended([this] { return backend_->shown(); });
+    if (driver_.failure()) sc_core::sc_stop();  // a picture could not be written: run() says so
+  };
   BackendStage::Progress progress;
   if (opt_.progress)
     progress = [this](size_t frame, uint64_t triangles, double modeled_s) {

@@ -45,9 +45,15 @@ std::optional<std::string> limit_warning(const std::string& input, const RunStat
   if (n.first_affected_line > 0) first += " (line " + std::to_string(n.first_affected_line) + ")";
   std::string settings;
   for (const std::string& k : keys) settings += (settings.empty() ? "" : " and ") + k;
+  bool attributes = false;  // R, G, B, T or Z: steep planes, which the preparer can cut instead
+  for (int i = 0; i < kEpD1; ++i) attributes = attributes || n.ep[i].wraps || (s.preparer && s.preparer->clamps[i]);
+  const std::string steep = attributes && !p.steep_limited
+                                ? "; for R, G, B, T and Z, so does preparer.steep_attributes \"limited\" "
+                                  "(config/presets/robust.json), with no variant"
+                                : "";
   return input + ": " + what + " in " + std::to_string(n.triangles_affected) + " triangle(s); first: " + first +
          ": the picture is wrong there. A --config file setting " + settings +
-         " avoids it (on rtl, an RTL variant is built for it)";
+         " avoids it (on rtl, an RTL variant is built for it)" + steep;
 }
 
 std::optional<std::string> seam_warning(const std::string& input, const RunStats& s) {

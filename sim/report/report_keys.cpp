@@ -273,8 +273,9 @@ std::vector<ReportKey> make_keys() {
           "back end (golden and reference run it before drawing, approx and rtl as their pipeline's stages; "
           "`--dump` and the progress line take what that one run made), 0 for triangle and DDA traces",
           kEvery, [](auto& r) { return json(r.ctx.front_end_passes); }),
-      key("wall_s", "s", "host wall time of the render (the back end; the front end runs before it on golden and "
-          "reference, inside it on approx and rtl)", kEvery, [](auto& r) { return json(r.s.wall_s); }, true),
+      key("wall_s", "s", "host wall time of the render: the back end's, with the front end's stages on approx and "
+          "rtl; golden's and reference's front end, placing a scene's frames and writing `--frames all` pictures "
+          "are left out", kEvery, [](auto& r) { return json(r.s.wall_s); }, true),
       key("image_sha256", "hex", "SHA-256 of the displayed buffer's raw RGB bytes (screen width x height x 3, row by row)", kEvery,
           [](auto& r) { return json(r.ctx.image_sha256); }, true),
       key("not_modeled", "list", "the registered keys this back end cannot know (their values are null)", kEvery,

@@ -84,6 +84,8 @@ int run_bench(const BenchArgs& a) {
   }
   if (a.scale_only) {
     if (!config.empty()) throw InputError("--config", 0, "bench --scale renders with the default configuration");
+    if (a.animation_frames.at(0) >= a.animation_frames.at(1))
+      throw InputError("--frames", 0, "the short frame count comes first and is the smaller");
     const ScaleBench sb = run_scale_bench(out_dir, a.scale_sizes, a.scale_runs);
     const AnimationBench ab = sb.failures ? AnimationBench{}
                                           : run_animation_bench(out_dir, a.animation_frames.at(0), a.animation_frames.at(1));

@@ -224,7 +224,7 @@ namespace girtd {
 // x 99..101 (the box) and rows 99..151; the centroid is (100.1, 116.67),
 // red 127.5. The corner (101, 151) binds: along +34.33 px (red +87.5),
 // across -0.831 px, so across is cut to (1,024 - 127.5 - 87.5) / 0.831 =
-// 973 per px (less the walk's rounding margin, 56 steps of half an LSB),
+// 973 per px (less the walk's rounding margin, 56 steps of an LSB),
 // and d/dx = 973 x 1.0 + 2.55 x 0.002 = 973.
 TEST_CASE("preparer: steep attributes limited across a needle", "[preparer]") {
   const Triangle needle = tri({{{100, 100, 0}, {100.2, 100, 255}, {100.1, 150, 127.5}}});
@@ -249,6 +249,27 @@ TEST_CASE("preparer: steep attributes limited across a needle", "[preparer]") {
   const double cx = (100 + 100.2 + 100.1) / 3, cy = (100 + 100 + 150) / 3.0;
   const double at_centroid = double(d.ep[kEpR].v) / 512 + dx * (cx - d.x0) + dy * (cy - d.y0);
   CHECK(at_centroid == Approx(127.5).margin(0.05));
+}
+
+}  // namespace girtd
+
+namespace girtd {
+
+// A flat white triangle in a colour EP of 9 integer bits (+-256): 255 fits,
+// but not with the walk's rounding margin below the top. No cut can help a
+// plane whose own value does not fit: it is left as computed (R = 255 x 512
+// raw, no derivative), not cut to nonsense.
+TEST_CASE("preparer: steep attributes leave a plane alone that no cut can fit", "[preparer]") {
+  Triangle flat = tri({{{10, 10, 255}, {1000, 10, 255}, {10, 760, 255}}});
+  const Params narrow = Params::with_overrides(
+      {{"ep", {{"color", {{"int_bits", 9}, {"frac_bits", 9}}}}}, {"preparer", {{"steep_attributes", "limited"}}}}, "test");
+  DdaPreparer prep(narrow);
+  DdaParams d;
+  REQUIRE(prep.prepare(flat, frame(1), d) == PrepareResult::kReady);
+  CHECK(prep.counts().limited_planes == 0);
+  CHECK(d.ep[kEpR].v == 255 * 512);
+  CHECK(d.ep[kEpR].dx == 0);
+  CHECK(d.ep[kEpR].dy == 0);
 }
 
 }  // namespace girtd
