@@ -131,14 +131,16 @@ PrepareResult DdaPreparer::prepare(const Triangle& t, const FrameSettings& f, Dd
   const FixFormat* attr_fmt[kAttrCount] = {&params_.ep_color, &params_.ep_color, &params_.ep_color,
                                            &params_.ep_t, &params_.ep_z};
   const WalkBox walk{x0, y0, box, f.q};
-  std::optional<EmitRegion> region;  // preparer.steep_attributes limited: found once, for every plane
-  if (params_.steep_limited) region = emit_region(s, walk);
+  std::optional<EmitRegion> region;  // preparer.steep_attributes limited: found once, for the planes that need it
   for (int a = 0; a < kAttrCount; ++a) {
     const AttributePlane& pl = s.attr[a];
     const double k = attr_scale[a];
     SteepPlane plane{k * pl.at(x0, y0), k * pl.dx, k * pl.dy};
-    if (region && limit_steep_plane(plane, k * pl.at(region->centroid.x, region->centroid.y), *attr_fmt[a], walk, *region))
-      ++counts_.limited_planes;
+    if (params_.steep_limited && !fits_walk_box(plane, *attr_fmt[a], walk)) {
+      if (!region) region = emit_region(s, walk);
+      if (limit_steep_plane(plane, k * pl.at(region->centroid.x, region->centroid.y), *attr_fmt[a], walk, *region))
+        ++counts_.limited_planes;
+    }
     convert(plane.v, plane.dx, plane.dy, *attr_fmt[a], out.ep[attr_ep[a]]);
   }
   ++counts_.prepared;

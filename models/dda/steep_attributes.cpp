@@ -25,16 +25,24 @@ Room room_of(const FixFormat& fmt, const WalkBox& w) {
           static_cast<double>(fmt.raw_max()) * lsb};
 }
 
-bool fits(double centroid_value, double dx, double dy, const Room& room, const std::vector<Point>& corners) {
+// The plane, `at_origin` where `corners` are measured from, within the room at every corner.
+template <class Corners>
+bool fits(double at_origin, double dx, double dy, const Room& room, const Corners& corners) {
   if (std::abs(dx) > room.d_max || std::abs(dy) > room.d_max) return false;
   for (const Point& c : corners) {
-    const double at = centroid_value + dx * c.x + dy * c.y;
+    const double at = at_origin + dx * c.x + dy * c.y;
     if (!(at >= room.lo && at <= room.hi)) return false;
   }
   return true;
 }
 
 }  // namespace
+
+bool fits_walk_box(const SteepPlane& plane, const FixFormat& fmt, const WalkBox& walk) {
+  const double l = walk.box.x0 - walk.x0, r = walk.box.x1 - walk.x0, bottom = walk.box.y1 - walk.y0;
+  const Point corners[4] = {{l, 0}, {r, 0}, {l, bottom}, {r, bottom}};
+  return fits(plane.v, plane.dx, plane.dy, room_of(fmt, walk), corners);
+}
 
 EmitRegion emit_region(const TriangleSetup& s, const WalkBox& w) {
   EmitRegion r;

@@ -49,6 +49,11 @@ struct EmitRegion {
 
 EmitRegion emit_region(const TriangleSetup& s, const WalkBox& walk);
 
+// True when `plane` fits `fmt` over the whole pixel box: over the emit
+// region too (it lies in the box), so no region need be found. The test
+// most planes pass, and the simulator's, not the modeled preparer's.
+bool fits_walk_box(const SteepPlane& plane, const FixFormat& fmt, const WalkBox& walk);
+
 // `plane` (at the start pixel; `centroid_value`: the plane at the region's
 // centroid) limited for `fmt`; returns false and leaves it when it already
 // fits, or cannot be made to.
