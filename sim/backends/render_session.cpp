@@ -36,8 +36,8 @@ RenderOutput render_frames(const BackendEntry& entry, FrameSource& input, const 
   RenderOutput out;
   for (size_t i = 0; i < n_frames; ++i) {
     TraceFrame f = driver.untimed([&] { return input.take(i); });  // a scene's frame is placed now
-    if (dda_tap) tap->begin_frame(f.settings);
-    else if (tap && tap->level() == TraceLevel::kPolygon) tap->frame(f);
+    if (dda_tap) tap->begin_frame(f.settings);  // its sets as the back end draws them
+    if (tap && tap->level() == TraceLevel::kPolygon) tap->frame(f);  // the input, before the front end
     if (front_end) {
       // The polygons go as soon as the front end is through with them (a
       // polygon-level dump has written them already). Not the back end's:
@@ -45,7 +45,7 @@ RenderOutput render_frames(const BackendEntry& entry, FrameSource& input, const 
       f.triangles = driver.untimed([&] { return front_end->run_releasing(f.world, f.settings); });
       f.world = WorldFrame{};
     }
-    if (tap && !dda_tap && tap->level() != TraceLevel::kPolygon) tap->frame(f);
+    if (tap && tap->level() == TraceLevel::kTriangle) tap->frame(f);  // the triangles as drawn
     backend.begin_frame(f.settings);
     for (size_t k = 0; k < f.triangles.size(); ++k) {
       backend.draw(f.triangles[k]);

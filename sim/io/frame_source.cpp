@@ -9,7 +9,7 @@ namespace girtd {
 namespace {
 
 uint64_t first_stage_items(const TraceFrame& f, TraceLevel level) {
-  return level == TraceLevel::kPolygon ? f.world.objects.size() : f.triangles.size() + f.dda.size();
+  return level == TraceLevel::kPolygon ? frame_objects(f.world).size() : f.triangles.size() + f.dda.size();
 }
 
 }  // namespace

@@ -167,7 +167,7 @@ class SceneReader {
       }
       placer->frames.push_back(std::move(plan));
     }
-    if (params_.q_override) apply_q_override(settings, params_);
+    apply_q_override(settings, params_);
     placer->base = std::move(base);
     placer->focal = focal;
     for (const Instance& in : instances) placer->transforms.push_back(in.transform);

@@ -41,7 +41,7 @@ PipelineElaboration::PipelineElaboration(const BackendEntry& backend, FrameSourc
   backend_->begin(input);
   // The stream that entered is dumped as the source takes it (take()); one
   // made inside, by the preparer stage as it crosses (front_end_modules.cpp).
-  if (!(tap && tap->level() == input.level())) tap_ = tap;
+  (tap && tap->level() == input.level() ? input_tap_ : tap_) = tap;
   total_items_ = input.items();  // for the progress line
   if (polygon_input_) build_from_polygons();
   else if (input.level() == TraceLevel::kTriangle) build_from_triangles();
@@ -51,8 +51,7 @@ PipelineElaboration::PipelineElaboration(const BackendEntry& backend, FrameSourc
 TraceFrame PipelineElaboration::take(size_t f) {
   return driver_.untimed([&] {  // placing a scene's frame, dumping the input: not the simulation's time
     TraceFrame frame = input_.take(f);
-    DumpTap* tap = driver_.tap();
-    if (tap && tap->level() == input_.level()) tap->frame(frame);
+    if (input_tap_) input_tap_->frame(frame);
     return frame;
   });
 }

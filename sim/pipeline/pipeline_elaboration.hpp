@@ -148,6 +148,7 @@ class PipelineElaboration {
   std::unique_ptr<WaveRecorder> wave_;
   uint64_t total_items_ = 0;
   DumpTap* tap_ = nullptr;  // a stream made inside the pipeline (the preparer's input or output)
+  DumpTap* input_tap_ = nullptr;  // the stream that entered, dumped as the source takes it
 };
 
 }  // namespace girtd
