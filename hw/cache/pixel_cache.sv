@@ -81,4 +81,8 @@ module pixel_cache #(
     assign head_slot_data_o[i*CW+:CW] = cell_q[head_slot][i];
     assign flush_data_o[i*CW+:CW] = cell_q[flush_slot][i];
   end
+
+`ifdef FORMAL_PIXEL_CACHE  // tools/girtd formal, when this module is the one proven
+`include "pixel_cache_formal.svh"
+`endif
 endmodule

@@ -52,4 +52,8 @@ module pixel_fifo #(
     if (rst_ni && pop_i && empty_o) $error("pixel_fifo: pop from an empty FIFO");
   end
 `endif
+
+`ifdef FORMAL_PIXEL_FIFO  // tools/girtd formal, when this module is the one proven
+`include "pixel_fifo_formal.svh"
+`endif
 endmodule

@@ -340,4 +340,8 @@ module had (
   end
 
   assign idle_o = state_q == H_IDLE && !flush_pending_q && !wb_pending_q && !pf_loading_q;
+
+`ifdef FORMAL_HAD  // tools/girtd formal, when this module is the one proven
+`include "had_formal.svh"
+`endif
 endmodule

@@ -165,4 +165,8 @@ module vram #(
   end
   /* verilator lint_on BLKSEQ */
   assign rdata_o = rdata_q;
+
+`ifdef FORMAL_VRAM  // tools/girtd formal, when this module is the one proven
+`include "vram_formal.svh"
+`endif
 endmodule

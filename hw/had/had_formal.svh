@@ -1,0 +1,97 @@
+// Formal properties of the HAD with its cache, included into had under
+// `ifdef FORMAL` (tools/girtd formal; hw/formal.json lists the instances).
+// Labelled asserts are the properties; the comment after each is its row.
+// Environment, as girtd_backend and the VRAM treat the HAD: reset first;
+// the option and timing registers fixed; one base tick per edge (ticks_i = 1,
+// as in hardware); the FIFO's head held until popped; once a flush is asked
+// for and the FIFO has drained, no new pixel until the flush is done (the
+// back end flushes after the DDA has finished). The VRAM is abstract: it
+// takes a request when not busy, runs one operation at a time, ends each with
+// one done within F_VRAM_TICKS ticks, and is busy for other work (refresh,
+// scan-out) at most F_VRAM_TICKS ticks in a row; the data it returns is free.
+localparam int F_VRAM_TICKS = 3;
+localparam int F_IDLE_BOUND = 96;  // ticks from the last input to idle (see had_idle)
+logic f_past_q = 1'b0;
+always_ff @(posedge clk_i) f_past_q <= 1'b1;
+logic [girtd_pkg::TIME_W-1:0] f_access_q, f_blend_q;
+logic [3:0] f_options_q;
+logic [girtd_pkg::FIFO_W-1:0] f_head_q;
+logic f_head_held_q, f_draining_q, f_vram_op_q;
+logic [3:0] f_vram_age_q, f_vram_other_q;
+always_ff @(posedge clk_i) begin
+  {f_access_q, f_blend_q} <= {access_ticks_i, blend_ticks_i};
+  f_options_q <= {one_minus_exact_i, write_behind_i, prefetch_i, dirty_bits_i};
+  f_head_q <= fifo_data_i;
+  f_head_held_q <= rst_ni && !fifo_empty_i && !fifo_pop_o;
+  f_draining_q <= rst_ni && (flush_pending_q || flush_i) && (f_draining_q || fifo_empty_i);
+  if (!rst_ni) f_vram_op_q <= 1'b0;
+  else if (vram_req_o && !vram_busy_i) f_vram_op_q <= 1'b1;
+  else if (vram_done_i) f_vram_op_q <= 1'b0;
+  f_vram_age_q <= !rst_ni || !f_vram_op_q || vram_done_i ? '0 : f_vram_age_q + 1'b1;
+  f_vram_other_q <= !rst_ni || f_vram_op_q || !vram_busy_i ? '0 : f_vram_other_q + 1'b1;
+end
+always_comb begin
+  if (!f_past_q) assume (!rst_ni);
+  assume (ticks_i == girtd_pkg::LONG_TIME_W'(1));
+  if (f_past_q) assume ({access_ticks_i, blend_ticks_i} == {f_access_q, f_blend_q} &&
+                        {one_minus_exact_i, write_behind_i, prefetch_i, dirty_bits_i} == f_options_q);
+  if (f_head_held_q) assume (!fifo_empty_i && fifo_data_i == f_head_q);
+  if (f_draining_q) assume (fifo_empty_i);
+  // The VRAM: a done only for an operation in flight (which may hand over to the next on its last tick).
+  if (vram_done_i) assume (f_vram_op_q);
+  if (f_vram_op_q && !vram_done_i) assume (vram_busy_i);
+  if (32'(f_vram_age_q) >= F_VRAM_TICKS) assume (vram_done_i);
+  if (32'(f_vram_other_q) >= F_VRAM_TICKS) assume (!vram_busy_i);
+end
+
+// One pixel, chosen by the solver, followed: the value the HAD last wrote to
+// its cell, and where that value is while it is not yet in the VRAM (only in
+// the cache, or in the write-behind register).
+(* anyconst *) logic [NW-1:0] f_page;
+(* anyconst *) logic [IW-1:0] f_index;
+function automatic logic [CW-1:0] f_cell_of(input logic [PW-1:0] data);  // constant part selects
+  f_cell_of = '0;
+  for (int i = 0; i < girtd_pkg::PAGE_PIXELS; i++) if (f_index == IW'(i)) f_cell_of = data[i*CW+:CW];
+endfunction
+function automatic logic [girtd_pkg::CACHE_SLOT_W-1:0] f_slot_of(input logic [NW-1:0] page);
+  f_slot_of = girtd_pkg::CACHE_SLOT_W'(32'(page) % PAGES);
+endfunction
+logic [CW-1:0] f_value_q;
+logic f_in_cache_only_q, f_in_write_behind_q, f_flushed_q;
+logic f_vram_write, f_capture, f_mine;
+assign f_vram_write = vram_req_o && vram_we_o && !vram_busy_i && vram_page_o == f_page;
+assign f_capture = state_q == H_IDLE && miss_go && must_write_back && write_behind_i && victim_page == f_page;
+assign f_mine = cache_write && pix_page == f_page && x == f_index;
+always_ff @(posedge clk_i) begin
+  if (!rst_ni) {f_in_cache_only_q, f_in_write_behind_q} <= '0;
+  else begin
+    if (f_mine) f_value_q <= cell_new;
+    if (f_mine) f_in_cache_only_q <= 1'b1;
+    else if (f_vram_write || f_capture) f_in_cache_only_q <= 1'b0;
+    if (f_capture && f_in_cache_only_q) f_in_write_behind_q <= 1'b1;
+    else if (f_vram_write) f_in_write_behind_q <= 1'b0;
+  end
+  f_flushed_q <= rst_ni && flush_pending_q && !flush_i && next_flush_done;
+end
+logic next_flush_done;  // this tick ends the frame-end flush
+assign next_flush_done = (flush_step && !flush_valid || state_q == H_FLUSH && (vram_done_i || !flush_write_back)) &&
+                         32'(flush_slot_q) == PAGES - 1;
+
+// Ticks since the input stopped: the FIFO empty and no flush asked for.
+logic [7:0] f_quiet_q;
+always_ff @(posedge clk_i) f_quiet_q <= !rst_ni || !fifo_empty_i || flush_i ? '0 : f_quiet_q + 8'(f_quiet_q != '1);
+
+always_comb if (f_past_q && rst_ni) begin
+  if (f_vram_write && (f_in_cache_only_q || f_in_write_behind_q))
+    had_write_back_data: assert (f_cell_of(vram_wdata_o) == f_value_q);  // a page written back carries the last value written to each pixel
+  if (f_capture && f_in_cache_only_q)
+    had_write_behind_data: assert (f_cell_of(victim_data) == f_value_q);  // the write-behind register takes the page as last written
+  if (cache_load && f_slot_of(pix_page) == f_slot_of(f_page))
+    had_no_lost_write: assert (!f_in_cache_only_q);  // a page with a written pixel is written back (or taken by write-behind) before its slot is reloaded
+  if (f_flushed_q)
+    had_flush_complete: assert (!f_in_cache_only_q && !f_in_write_behind_q);  // after the frame-end flush every written pixel is on its way to the VRAM
+  if (32'(f_quiet_q) >= F_IDLE_BOUND && !flush_i)
+    had_idle: assert (idle_o);  // input stopped: idle (flush done, write-behind and prefetch drained) within F_IDLE_BOUND ticks
+  if (f_in_write_behind_q)
+    had_write_behind_held: assert (wb_pending_q && wb_page_q == f_page && f_cell_of(wb_data_q) == f_value_q);  // the write-behind register holds its page until it is written
+end

@@ -1,0 +1,376 @@
+#!/usr/bin/env python3
+"""Proves the RTL's formal properties and checks that each seeded bug breaks one.
+
+Usage: formal.py BUILD_DIR [--out DIR] [--jobs N] [--unit UNIT]...
+       formal.py BUILD_DIR --table results/formal/formal.json   (a recorded run's tables)
+(tools/girtd formal runs it; hw/README.md "Formal properties").
+
+hw/formal.json lists what is proven: each check names a unit (hw/UNIT/),
+its top module, the package instance it is elaborated with (the generated
+girtd_pkg.sv with some items overridden) and the method:
+- "induction": yosys-smtbmc with z3, a bounded check of the first k ticks
+  from reset and a k-induction step: together an unbounded proof;
+- "pdr": ABC's property-directed reachability (IC3) on the bit-level model
+  (AIGER): an unbounded proof that finds its own invariants.
+The properties are the labelled immediate asserts of hw/UNIT/TOP_formal.svh,
+which the unit includes under `ifdef FORMAL`; the comment after each is its
+row in the table. Each seeded bug is a one-line change to a unit; it is
+caught when some property of that unit then fails.
+
+Prints a markdown table (property, unit, instance, method, result, time)
+and the seeded bugs; --out DIR also writes formal.json and formal.md there.
+Exit 1 when a property is not proven or a seeded bug is not caught; exit 2
+on bad usage or a hw/formal.json that no longer matches the RTL.
+"""
+import argparse
+import concurrent.futures
+import json
+import os
+import pathlib
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+SPEC = ROOT / "hw" / "formal.json"
+TIMEOUT_S = 600  # per solver run: a run past it is reported as "timeout", not proven
+LABEL = re.compile(r"^\s*(?:if\s*\(.*?\)\s*)?(\w+):\s*assert\s*\(", re.M)
+
+
+class SpecError(Exception):
+    pass
+
+
+def properties(unit, top):
+    """[(label, description)] of hw/UNIT/TOP_formal.svh: each labelled assert and the comment ending it."""
+    path = ROOT / "hw" / unit / f"{top}_formal.svh"
+    text = path.read_text()
+    found = []
+    for m in LABEL.finditer(text):
+        end = text.index(");", m.end())
+        line_end = text.find("\n", end)
+        comment = text[end:line_end].partition("//")[2].strip()
+        if not comment:
+            raise SpecError(f"{path.relative_to(ROOT)}: property {m.group(1)} has no comment to describe it")
+        found.append((m.group(1), comment))
+    if not found:
+        raise SpecError(f"{path.relative_to(ROOT)}: no labelled assert")
+    return found
+
+
+def package(generated, overrides, name):
+    """The generated package with OVERRIDES applied, checked for the relations the generator keeps."""
+    text = generated
+    for item, value in overrides.items():
+        text, n = re.subn(rf"(localparam int {item} = )[^;]+;", rf"\g<1>{value};", text)
+        if n != 1:
+            raise SpecError(f"hw/formal.json: instance {name}: the package has no item {item}")
+    v = {k: int(x) for k, x in re.findall(r"localparam int (\w+) = (-?\d+);", text)}
+    relations = [
+        ("PAGE_PIXELS == 2^(PAGE_X_BITS + PAGE_Y_BITS)", v["PAGE_PIXELS"] == 1 << (v["PAGE_X_BITS"] + v["PAGE_Y_BITS"])),
+        ("PAGE_INDEX_W == PAGE_X_BITS + PAGE_Y_BITS", v["PAGE_INDEX_W"] == v["PAGE_X_BITS"] + v["PAGE_Y_BITS"]),
+        ("PAGE_NUMBER_W == 2 SCREEN_BITS - PAGE_INDEX_W", v["PAGE_NUMBER_W"] == 2 * v["SCREEN_BITS"] - v["PAGE_INDEX_W"]),
+        ("CELL_W == 3 COLOR_OUT + Z_OUT", v["CELL_W"] == 3 * v["COLOR_OUT"] + v["Z_OUT"]),
+        ("VRAM_W == 6 COLOR_OUT + Z_OUT", v["VRAM_W"] == 6 * v["COLOR_OUT"] + v["Z_OUT"]),
+        ("VRAM fields tile the word", v["VRAM_Z_LSB"] == 0 and v["VRAM_RGB1_LSB"] == v["Z_OUT"] and
+         v["VRAM_RGB0_LSB"] == v["Z_OUT"] + 3 * v["COLOR_OUT"]),
+        ("Z_CLEAR == 2^Z_OUT - 1", v["Z_CLEAR"] == (1 << v["Z_OUT"]) - 1),
+        ("CACHE_PAGES fits CACHE_SLOT_W", 1 <= v["CACHE_PAGES"] <= 1 << v["CACHE_SLOT_W"]),
+    ]
+    for what, holds in relations:
+        if not holds:
+            raise SpecError(f"hw/formal.json: instance {name}: {what} does not hold")
+    return text
+
+
+def yosys_read(job):
+    top, src_dir = job["top"], job["src_dir"]
+    chparam = " ".join(f"-set {k} {v}" for k, v in job["parameters"].items())
+    also = " ".join(str(ROOT / f) for f in job["also"])
+    return (f"read_verilog -sv -formal -DSYNTHESIS -DFORMAL_{top.upper()} -I{src_dir} {job['pkg_file']} {also} "
+            f"{src_dir}/{top}.sv\n"
+            + (f"chparam {chparam} {top}\n" if chparam else "")
+            + f"prep -top {top}\n")
+
+
+def run(argv, cwd, log):
+    try:
+        p = subprocess.run(argv, cwd=cwd, capture_output=True, text=True, timeout=TIMEOUT_S)
+    except subprocess.TimeoutExpired:
+        return None
+    (cwd / log).write_text(p.stdout + p.stderr)
+    return p
+
+
+def prove_induction(job, work):
+    """Every property at once: BMC of the first ticks from reset (at least k), then the k-induction step."""
+    script = yosys_read(job)
+    # The cache's two-dimensional arrays are not supported as SMT arrays by yosys 0.23: bits instead.
+    script += ("memory_map\nopt\n" if job["unit"] != "fifo" else "") + "async2sync\ndffunmap\nwrite_smt2 -wires model.smt2\n"
+    (work / "model.ys").write_text(script)
+    p = run(["yosys", "-q", "model.ys"], work, "yosys.log")
+    if p is None or p.returncode:
+        return {"error": "yosys failed: see " + str(work / "yosys.log")}
+    unroll = ["--unroll"] if job["unit"] != "fifo" else []
+    steps = [("base", [], job["bmc"])] + ([("induction", ["-i"], job["k"])] if job["k"] else [])
+    for step, extra, depth in steps:
+        p = run(["yosys-smtbmc", "-s", "z3", *unroll, *extra, "-t", str(depth), "model.smt2"], work, f"{step}.log")
+        if p is None:
+            return {"timeout": step}
+        failed = re.search(r"Assert failed in \S+: (\S+)", p.stdout)
+        if "Status: PASSED" not in p.stdout:
+            if step == "base" and failed:
+                return {"failed": failed.group(1)}
+            # An induction step that fails has a counterexample from an unreachable state: not proven.
+            return {"unproven": failed.group(1) if failed else "?", "step": step}
+    return {"proven": True}
+
+
+def prove_pdr(job, work, label):
+    """LABEL (or, given None, every property at once) with ABC's pdr on the AIGER model."""
+    script = yosys_read(job)
+    if label:
+        script += f"chformal -assert -remove t:$assert {job['top']}/{label} %d\n"
+    script += ("memory_map\nopt\nasync2sync\nflatten\nsetundef -undriven -anyseq\ndelete -output\n"
+               "techmap\nopt -fast\ndffunmap\nabc -g AND\nopt_clean\nwrite_aiger -zinit model.aig\n")
+    (work / "model.ys").write_text(script)
+    p = run(["yosys", "-q", "model.ys"], work, "yosys.log")
+    if p is None or p.returncode:
+        return {"error": "yosys failed: see " + str(work / "yosys.log")}
+    p = run(["yosys-abc", "-c", "read_aiger model.aig; fold; strash; pdr"], work, "abc.log")
+    if p is None:
+        return {"timeout": "pdr"}
+    if "Property proved" in p.stdout:
+        return {"proven": True}
+    frame = re.search(r"was asserted in frame (\d+)", p.stdout)
+    if not frame:
+        return {"error": "pdr gave no verdict: see " + str(work / "abc.log")}
+    if label:
+        return {"failed": label, "frame": int(frame.group(1))}
+    # The AIGER model ORs the properties: each on its own names the one that failed.
+    for other, _ in job["labels"]:
+        (work / other).mkdir(exist_ok=True)
+        named = prove_pdr(job, work / other, other)
+        if "failed" in named:
+            return named
+    return {"error": "pdr failed at frame %s with every property, with none alone: see %s" % (frame.group(1), work)}
+
+
+def run_job(job):
+    work = pathlib.Path(job["work"])
+    work.mkdir(parents=True, exist_ok=True)
+    start = time.monotonic()
+    if job["method"] == "induction":
+        verdict = prove_induction(job, work)
+    else:
+        verdict = prove_pdr(job, work, job.get("label"))
+    verdict["seconds"] = round(time.monotonic() - start, 1)
+    return verdict
+
+
+def sources(unit, bug, work):
+    """The unit's folder, with BUG's one-line change applied when given."""
+    if bug is None:
+        return ROOT / "hw" / unit
+    copy = work / "src"
+    copy.mkdir(parents=True, exist_ok=True)
+    for f in (ROOT / "hw" / unit).iterdir():
+        if f.suffix in (".sv", ".svh"):
+            (copy / f.name).write_text(f.read_text())
+    target = copy / pathlib.Path(bug["file"]).name
+    text = target.read_text()
+    if text.count(bug["replace"]) != 1:
+        raise SpecError(f"hw/formal.json: seeded bug '{bug['bug']}': {bug['file']} no longer has "
+                        f"'{bug['replace']}' exactly once")
+    target.write_text(text.replace(bug["replace"], bug["with"]))
+    return copy
+
+
+def plan(spec, generated, scratch, units):
+    """The proof jobs and the seeded-bug jobs."""
+    pkg_files = {}
+    for name, overrides in spec["instances"].items():
+        f = scratch / f"pkg_{name}.sv"
+        f.write_text(package(generated, overrides, name))
+        pkg_files[name] = str(f)
+    proofs, bugs = [], []
+    for c in spec["checks"]:
+        if units and c["unit"] not in units:
+            continue
+        labels = properties(c["unit"], c["top"])
+        for depth in c.get("depths", [None]):
+            parameters = dict(c.get("parameters", {}), **({"DEPTH": depth} if depth else {}))
+            instance = c["instance"] + (f", DEPTH {depth}" if depth else "")
+            base = dict(unit=c["unit"], top=c["top"], instance=instance, check_instance=c["instance"], depth=depth, method=c["method"], k=c.get("k"), bmc=max(c.get("bmc", 0), c.get("k", 0)), also=c.get("also", []),
+                        parameters=parameters, pkg_file=pkg_files[c["instance"]],
+                        src_dir=str(ROOT / "hw" / c["unit"]), labels=labels)
+            tag = re.sub(r"\W+", "_", f"{c['unit']}_{instance}")
+            if c["method"] == "induction":
+                proofs.append(dict(base, work=str(scratch / tag)))
+            else:
+                proofs += [dict(base, label=l, work=str(scratch / f"{tag}_{l}")) for l, _ in labels]
+    for i, bug in enumerate(spec["seeded_bugs"]):
+        if units and bug["unit"] not in units:
+            continue
+        c = next(c for c in spec["checks"] if c["unit"] == bug["unit"] and
+                 c["instance"] == bug.get("instance", c["instance"]))
+        work = scratch / f"bug{i}"
+        depth = c.get("depths", [None])[0]
+        parameters = dict(c.get("parameters", {}), **({"DEPTH": depth} if depth else {}))
+        base = dict(unit=c["unit"], top=c["top"], instance=c["instance"] + (f", DEPTH {depth}" if depth else ""),
+                    method=c["method"], k=c.get("k"), bmc=max(c.get("bmc", 0), c.get("k", 0)), also=c.get("also", []),
+                    parameters=parameters, pkg_file=pkg_files[c["instance"]],
+                    src_dir=str(sources(c["unit"], bug, work)), bug=bug["bug"], labels=properties(c["unit"], c["top"]))
+        bugs.append([dict(base, work=str(work / "run"))])
+    return proofs, bugs
+
+
+def method_text(job):
+    if job["method"] == "induction":
+        return f"k-induction, k = {job['k']}, base {job['bmc']} ticks (z3)"
+    return "PDR (ABC)"
+
+
+def result_text(verdict, label):
+    if "proven" in verdict:
+        return "proven"
+    if verdict.get("failed") == label:
+        return "FAILED" + (f" (frame {verdict['frame']})" if "frame" in verdict else "")
+    if verdict.get("unproven") == label:
+        return "NOT PROVEN (induction step)"
+    if "timeout" in verdict:
+        return f"TIMEOUT ({TIMEOUT_S} s)"
+    if "error" in verdict:
+        return "ERROR"
+    return "not reached"
+
+
+def grouped(rows):
+    """One table row per property and check: the FIFO's built depths on one line."""
+    groups = {}
+    for r in rows:
+        groups.setdefault((r["property"], r["unit"], r["check_instance"], r["method"]), []).append(r)
+    for members in groups.values():
+        if len(members) == 1:
+            yield members[0]
+            continue
+        depths = [m["depth"] for m in members]
+        bad = [m for m in members if m["result"] != "proven"]
+        yield dict(members[0], instance=f"{members[0]['check_instance']}, DEPTH {min(depths)} to {max(depths)} "
+                                        f"({len(depths)} built depths)",
+                   result=f"{bad[0]['result']} at DEPTH {bad[0]['depth']}" if bad else "proven",
+                   seconds=round(sum(m["seconds"] for m in members), 1))
+
+
+def render(rows, bug_rows):
+    """The markdown tables and the summary line."""
+    md = ["| property | what it says | unit | instance | method | result | time |",
+          "|---|---|---|---|---|---|---|"]
+    md += [f"| `{r['property']}` | {r['description']} | {r['unit']} | {r['instance']} | {r['method']} | "
+           f"{r['result']} | {r['seconds']} s |" for r in grouped(rows)]
+    md += ["", "| seeded bug | unit | instance | caught by |", "|---|---|---|---|"]
+    md += [f"| {b['bug']} | {b['unit']} | {b['instance']} | "
+           f"{'`' + b['caught_by'] + '`' if b['caught_by'] else 'NOT CAUGHT'} |" for b in bug_rows]
+    proven = sum(r["result"] == "proven" for r in rows)
+    caught = sum(b["caught_by"] is not None for b in bug_rows)
+    return md, f"formal: {proven}/{len(rows)} properties proven, {caught}/{len(bug_rows)} seeded bugs caught"
+
+
+def print_recorded(path):
+    """The tables of a recorded run (results/formal/formal.json), for hw/README.md's generated section."""
+    sys.path.insert(0, str(ROOT / "studies"))
+    import recorded
+    if not pathlib.Path(path).is_file():
+        print(f"No recorded run ({path}): `tools/girtd formal --out out/formal && tools/girtd docs --record out/formal`.")
+        return 0
+    record = json.loads(pathlib.Path(path).read_text())
+    md, summary = render(record["properties"], record["seeded_bugs"])
+    print("\n".join(md) + "\n\n" + summary + ", recorded" +
+          recorded.measured_at(str(pathlib.Path(path).resolve().parent.relative_to(recorded.RESULTS.resolve()))) + ".")
+    return 0
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("build")
+    ap.add_argument("--out")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--unit", action="append", default=[])
+    ap.add_argument("--table", metavar="FORMAL_JSON", help="print the tables of a recorded run and stop")
+    args = ap.parse_args()
+    if args.table:
+        return print_recorded(args.table)
+    generated_pkg = pathlib.Path(args.build) / "generated" / "hw" / "girtd_pkg.sv"
+    if not generated_pkg.is_file():
+        print(f"formal.py: {generated_pkg}: no generated package (build first: tools/girtd formal)", file=sys.stderr)
+        return 2
+    try:
+        spec = json.loads(SPEC.read_text())
+    except json.JSONDecodeError as e:
+        print(f"hw/formal.json:{e.lineno}: {e.msg}", file=sys.stderr)
+        return 2
+    unknown = set(args.unit) - {c["unit"] for c in spec["checks"]}
+    if unknown:
+        print(f"formal.py: no checks for unit(s) {', '.join(sorted(unknown))} in hw/formal.json", file=sys.stderr)
+        return 2
+    with tempfile.TemporaryDirectory(prefix="girtd_formal_") as tmp:
+        scratch = pathlib.Path(tmp)
+        try:
+            proofs, bugs = plan(spec, generated_pkg.read_text(), scratch, set(args.unit))
+        except SpecError as e:
+            print(f"formal.py: {e}", file=sys.stderr)
+            return 2
+        flat_bugs = [j for group in bugs for j in group]
+        total = len(proofs) + len(flat_bugs)
+        print(f"formal: {len(proofs)} proof runs and {len(bugs)} seeded bugs on {args.jobs} job(s)", file=sys.stderr)
+        verdicts = {}
+        with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+            futures = {pool.submit(run_job, j): id(j) for j in proofs + flat_bugs}
+            for n, f in enumerate(concurrent.futures.as_completed(futures), 1):
+                verdicts[futures[f]] = f.result()
+                if sys.stderr.isatty():
+                    print(f"\rformal: {n}/{total} runs done", end="", file=sys.stderr)
+        if sys.stderr.isatty():
+            print(file=sys.stderr)
+
+    rows, failures = [], 0
+    for job in proofs:
+        v = verdicts[id(job)]
+        for label, text in job["labels"]:
+            if job["method"] == "pdr" and label != job["label"]:
+                continue
+            result = result_text(v, label)
+            failures += result != "proven"
+            rows.append(dict(property=label, description=text, unit=job["unit"], instance=job["instance"],
+                             check_instance=job["check_instance"], depth=job["depth"],
+                             method=method_text(job), result=result, seconds=v["seconds"],
+                             **({"detail": v["error"]} if "error" in v else {})))
+    bug_rows = []
+    for group in bugs:
+        caught = [verdicts[id(j)] for j in group if "failed" in verdicts[id(j)]]
+        errors = [verdicts[id(j)]["error"] for j in group if "error" in verdicts[id(j)]]
+        job = group[0]
+        bug_rows.append(dict(unit=job["unit"], bug=job["bug"], instance=job["instance"],
+                             caught_by=caught[0]["failed"] if caught else None,
+                             seconds=round(sum(verdicts[id(j)]["seconds"] for j in group), 1),
+                             **({"detail": errors[0]} if errors and not caught else {})))
+        failures += not caught
+
+    md, summary = render(rows, bug_rows)
+    print("\n".join(md) + "\n\n" + summary)
+    for r in rows + bug_rows:
+        if "detail" in r:
+            print(f"formal: {r['unit']}: {r['detail']}", file=sys.stderr)
+    if args.out:
+        out = pathlib.Path(args.out)
+        out.mkdir(parents=True, exist_ok=True)
+        (out / "formal.json").write_text(json.dumps({"properties": rows, "seeded_bugs": bug_rows,
+                                                     "summary": summary}, indent=2) + "\n")
+        (out / "formal.md").write_text("\n".join(md) + "\n\n" + summary + "\n")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
