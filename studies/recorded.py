@@ -23,7 +23,7 @@ MANIFEST = RESULTS / "recorded.json"
 # What a recorded result depends on: the simulator, its design values and the
 # inputs it ran (a result of the report page only the page's code).
 SIMULATOR = ["sim", "models", "hw", "config", "traces", "studies", "cmake", "CMakeLists.txt"]
-MEASURES = {"report_page": ["sim/report"], "formal": ["hw", "tools/formal.py"]}
+MEASURES = {"report_page": ["sim/report"], "formal": ["hw", "config", "models/layout", "tools/formal.py"]}
 # What a result does not depend on in the folders it measures: their documents.
 NOT_SOURCES = ":(exclude,glob)**/*.md"
 # Not results: this folder's own documents.

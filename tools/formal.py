@@ -28,6 +28,8 @@ import json
 import os
 import pathlib
 import re
+import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -43,12 +45,22 @@ class SpecError(Exception):
     pass
 
 
-def properties(unit, top):
-    """[(label, description)] of hw/UNIT/TOP_formal.svh: each labelled assert and the comment ending it."""
+def properties(unit, top, defines=()):
+    """[(label, description)] of hw/UNIT/TOP_formal.svh: each labelled assert and the comment ending it,
+    leaving out those inside an `ifdef NAME block whose NAME is not in DEFINES."""
     path = ROOT / "hw" / unit / f"{top}_formal.svh"
     text = path.read_text()
     found = []
     for m in LABEL.finditer(text):
+        opened = re.findall(r"^`(ifdef (\w+)|endif)", text[:m.start()], re.M)
+        inside = []
+        for directive, name in opened:
+            if directive.startswith("ifdef"):
+                inside.append(name)
+            elif inside:
+                inside.pop()
+        if any(name not in defines for name in inside):
+            continue
         end = text.index(");", m.end())
         line_end = text.find("\n", end)
         comment = text[end:line_end].partition("//")[2].strip()
@@ -68,17 +80,27 @@ def package(generated, overrides, name):
         if n != 1:
             raise SpecError(f"hw/formal.json: instance {name}: the package has no item {item}")
     v = {k: int(x) for k, x in re.findall(r"localparam int (\w+) = (-?\d+);", text)}
-    relations = [
-        ("PAGE_PIXELS == 2^(PAGE_X_BITS + PAGE_Y_BITS)", v["PAGE_PIXELS"] == 1 << (v["PAGE_X_BITS"] + v["PAGE_Y_BITS"])),
-        ("PAGE_INDEX_W == PAGE_X_BITS + PAGE_Y_BITS", v["PAGE_INDEX_W"] == v["PAGE_X_BITS"] + v["PAGE_Y_BITS"]),
-        ("PAGE_NUMBER_W == 2 SCREEN_BITS - PAGE_INDEX_W", v["PAGE_NUMBER_W"] == 2 * v["SCREEN_BITS"] - v["PAGE_INDEX_W"]),
-        ("CELL_W == 3 COLOR_OUT + Z_OUT", v["CELL_W"] == 3 * v["COLOR_OUT"] + v["Z_OUT"]),
-        ("VRAM_W == 6 COLOR_OUT + Z_OUT", v["VRAM_W"] == 6 * v["COLOR_OUT"] + v["Z_OUT"]),
-        ("VRAM fields tile the word", v["VRAM_Z_LSB"] == 0 and v["VRAM_RGB1_LSB"] == v["Z_OUT"] and
-         v["VRAM_RGB0_LSB"] == v["Z_OUT"] + 3 * v["COLOR_OUT"]),
-        ("Z_CLEAR == 2^Z_OUT - 1", v["Z_CLEAR"] == (1 << v["Z_OUT"]) - 1),
-        ("CACHE_PAGES fits CACHE_SLOT_W", 1 <= v["CACHE_PAGES"] <= 1 << v["CACHE_SLOT_W"]),
-    ]
+    try:
+        slot_w = max(1, (v["CACHE_PAGES"] - 1).bit_length())
+        relations = [
+            ("PAGE_X_BITS + PAGE_Y_BITS <= SCREEN_BITS", v["PAGE_X_BITS"] <= v["SCREEN_BITS"] and
+             v["PAGE_Y_BITS"] <= v["SCREEN_BITS"]),
+            ("PAGE_PIXELS == 2^(PAGE_X_BITS + PAGE_Y_BITS)", v["PAGE_PIXELS"] == 1 << (v["PAGE_X_BITS"] + v["PAGE_Y_BITS"])),
+            ("PAGE_INDEX_W == PAGE_X_BITS + PAGE_Y_BITS", v["PAGE_INDEX_W"] == v["PAGE_X_BITS"] + v["PAGE_Y_BITS"]),
+            ("PAGE_NUMBER_W == 2 SCREEN_BITS - PAGE_INDEX_W", v["PAGE_NUMBER_W"] == 2 * v["SCREEN_BITS"] - v["PAGE_INDEX_W"]),
+            ("CELL_W == 3 COLOR_OUT + Z_OUT", v["CELL_W"] == 3 * v["COLOR_OUT"] + v["Z_OUT"]),
+            ("VRAM_W == 6 COLOR_OUT + Z_OUT", v["VRAM_W"] == 6 * v["COLOR_OUT"] + v["Z_OUT"]),
+            ("VRAM fields tile the word", v["VRAM_Z_LSB"] == 0 and v["VRAM_Z_W"] == v["Z_OUT"] and
+             v["VRAM_RGB1_LSB"] == v["Z_OUT"] and v["VRAM_RGB1_W"] == 3 * v["COLOR_OUT"] and
+             v["VRAM_RGB0_LSB"] == v["Z_OUT"] + 3 * v["COLOR_OUT"] and v["VRAM_RGB0_W"] == 3 * v["COLOR_OUT"]),
+            ("Z_CLEAR < 2^Z_OUT", 0 <= v["Z_CLEAR"] < 1 << v["Z_OUT"]),
+            ("CACHE_SLOT_W == max(1, clog2(CACHE_PAGES))", v["CACHE_PAGES"] >= 1 and v["CACHE_SLOT_W"] == slot_w),
+            ("TIME_W <= LONG_TIME_W", v["TIME_W"] <= v["LONG_TIME_W"]),
+            ("the FIFO's X and Y hold a screen coordinate", v["FIFO_X_W"] >= v["SCREEN_BITS"] and
+             v["FIFO_Y_W"] >= v["SCREEN_BITS"]),
+        ]
+    except KeyError as e:
+        raise SpecError(f"hw/formal.json: instance {name}: the package has no item {e.args[0]}")
     for what, holds in relations:
         if not holds:
             raise SpecError(f"hw/formal.json: instance {name}: {what} does not hold")
@@ -89,30 +111,42 @@ def yosys_read(job):
     top, src_dir = job["top"], job["src_dir"]
     chparam = " ".join(f"-set {k} {v}" for k, v in job["parameters"].items())
     also = " ".join(str(ROOT / f) for f in job["also"])
-    return (f"read_verilog -sv -formal -DSYNTHESIS -DFORMAL_{top.upper()} -I{src_dir} {job['pkg_file']} {also} "
+    defines = " ".join(f"-D{d}" for d in [f"FORMAL_{top.upper()}"] + job["defines"])
+    return (f"read_verilog -sv -formal -DSYNTHESIS {defines} -I{src_dir} {job['pkg_file']} {also} "
             f"{src_dir}/{top}.sv\n"
             + (f"chparam {chparam} {top}\n" if chparam else "")
             + f"prep -top {top}\n")
 
 
 def run(argv, cwd, log):
-    try:
-        p = subprocess.run(argv, cwd=cwd, capture_output=True, text=True, timeout=TIMEOUT_S)
-    except subprocess.TimeoutExpired:
-        return None
-    (cwd / log).write_text(p.stdout + p.stderr)
-    return p
+    """ARGV's completed process (its output kept in cwd/LOG), or None past TIMEOUT_S (its solver killed too)."""
+    with subprocess.Popen(argv, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          start_new_session=True) as p:
+        try:
+            out, _ = p.communicate(timeout=TIMEOUT_S)
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.communicate()
+            return None
+    (cwd / log).write_text(out)
+    return subprocess.CompletedProcess(argv, p.returncode, out, "")
 
 
 def prove_induction(job, work):
     """Every property at once: BMC of the first ticks from reset (at least k), then the k-induction step."""
     script = yosys_read(job)
     # The cache's two-dimensional arrays are not supported as SMT arrays by yosys 0.23: bits instead.
+    script += "tee -q -o asserts.txt select -list t:$assert\n"
     script += ("memory_map\nopt\n" if job["unit"] != "fifo" else "") + "async2sync\ndffunmap\nwrite_smt2 -wires model.smt2\n"
     (work / "model.ys").write_text(script)
     p = run(["yosys", "-q", "model.ys"], work, "yosys.log")
     if p is None or p.returncode:
         return {"error": "yosys failed: see " + str(work / "yosys.log")}
+    # Every property the table will call proven is in the model, and nothing else is.
+    in_model = {line.split("/")[-1] for line in (work / "asserts.txt").read_text().split()}
+    if in_model != {label for label, _ in job["labels"]}:
+        return {"error": "the model's asserts %s are not the properties %s" % (
+            sorted(in_model), sorted(label for label, _ in job["labels"]))}
     unroll = ["--unroll"] if job["unit"] != "fifo" else []
     steps = [("base", [], job["bmc"])] + ([("induction", ["-i"], job["k"])] if job["k"] else [])
     for step, extra, depth in steps:
@@ -131,14 +165,16 @@ def prove_induction(job, work):
 def prove_pdr(job, work, label):
     """LABEL (or, given None, every property at once) with ABC's pdr on the AIGER model."""
     script = yosys_read(job)
-    if label:
+    script += "select -assert-count %d t:$assert\n" % len(job["labels"])
+    if label:  # this one must be there (a missing one would leave nothing to prove)
+        script += f"select -assert-count 1 t:$assert {job['top']}/{label} %i\n"
         script += f"chformal -assert -remove t:$assert {job['top']}/{label} %d\n"
     script += ("memory_map\nopt\nasync2sync\nflatten\nsetundef -undriven -anyseq\ndelete -output\n"
                "techmap\nopt -fast\ndffunmap\nabc -g AND\nopt_clean\nwrite_aiger -zinit model.aig\n")
     (work / "model.ys").write_text(script)
     p = run(["yosys", "-q", "model.ys"], work, "yosys.log")
     if p is None or p.returncode:
-        return {"error": "yosys failed: see " + str(work / "yosys.log")}
+        return {"error": "yosys failed (or the properties are not those of the model): see " + str(work / "yosys.log")}
     p = run(["yosys-abc", "-c", "read_aiger model.aig; fold; strash; pdr"], work, "abc.log")
     if p is None:
         return {"timeout": "pdr"}
@@ -150,7 +186,7 @@ def prove_pdr(job, work, label):
     if label:
         return {"failed": label, "frame": int(frame.group(1))}
     # The AIGER model ORs the properties: each on its own names the one that failed.
-    for other, _ in job["labels"]:
+    for other, _ in job["prove"]:
         (work / other).mkdir(exist_ok=True)
         named = prove_pdr(job, work / other, other)
         if "failed" in named:
@@ -162,10 +198,13 @@ def run_job(job):
     work = pathlib.Path(job["work"])
     work.mkdir(parents=True, exist_ok=True)
     start = time.monotonic()
-    if job["method"] == "induction":
-        verdict = prove_induction(job, work)
-    else:
-        verdict = prove_pdr(job, work, job.get("label"))
+    try:
+        if job["method"] == "induction":
+            verdict = prove_induction(job, work)
+        else:
+            verdict = prove_pdr(job, work, job.get("label"))
+    except (OSError, ValueError) as e:
+        verdict = {"error": f"{type(e).__name__}: {e}"}
     verdict["seconds"] = round(time.monotonic() - start, 1)
     return verdict
 
@@ -196,33 +235,44 @@ def plan(spec, generated, scratch, units):
         f.write_text(package(generated, overrides, name))
         pkg_files[name] = str(f)
     proofs, bugs = [], []
-    for c in spec["checks"]:
+    for index, c in enumerate(spec["checks"]):
         if units and c["unit"] not in units:
             continue
-        labels = properties(c["unit"], c["top"])
+        labels = properties(c["unit"], c["top"], c.get("defines", []))
+        prove = [(l, t) for l, t in labels if l in c.get("properties", [l])]
+        if len(prove) != len(c.get("properties", prove)):
+            raise SpecError(f"hw/formal.json: a check of {c['unit']} names properties its file does not have")
         for depth in c.get("depths", [None]):
             parameters = dict(c.get("parameters", {}), **({"DEPTH": depth} if depth else {}))
-            instance = c["instance"] + (f", DEPTH {depth}" if depth else "")
-            base = dict(unit=c["unit"], top=c["top"], instance=instance, check_instance=c["instance"], depth=depth, method=c["method"], k=c.get("k"), bmc=max(c.get("bmc", 0), c.get("k", 0)), also=c.get("also", []),
+            check_instance = c["instance"] + (f", {c['note']}" if "note" in c else "")
+            instance = check_instance + (f", DEPTH {depth}" if depth else "")
+            base = dict(unit=c["unit"], top=c["top"], instance=instance, check_instance=check_instance, depth=depth,
+                        defines=c.get("defines", []), prove=prove, method=c["method"], k=c.get("k"), bmc=max(c.get("bmc", 0), c.get("k", 0)), also=c.get("also", []),
                         parameters=parameters, pkg_file=pkg_files[c["instance"]],
                         src_dir=str(ROOT / "hw" / c["unit"]), labels=labels)
-            tag = re.sub(r"\W+", "_", f"{c['unit']}_{instance}")
+            tag = re.sub(r"\W+", "_", f"check{index}_{c['unit']}_{depth or ''}")
             if c["method"] == "induction":
                 proofs.append(dict(base, work=str(scratch / tag)))
             else:
-                proofs += [dict(base, label=l, work=str(scratch / f"{tag}_{l}")) for l, _ in labels]
+                proofs += [dict(base, label=l, work=str(scratch / f"{tag}_{l}")) for l, _ in prove]
     for i, bug in enumerate(spec["seeded_bugs"]):
         if units and bug["unit"] not in units:
             continue
-        c = next(c for c in spec["checks"] if c["unit"] == bug["unit"] and
-                 c["instance"] == bug.get("instance", c["instance"]))
+        # The first check of the bug's unit on its instance (if it names one), a liveness check if it says so.
+        c = next((c for c in spec["checks"] if c["unit"] == bug["unit"] and
+                  c["instance"] == bug.get("instance", c["instance"]) and
+                  bool(c.get("defines")) == (bug.get("check") == "liveness")), None)
+        if c is None:
+            raise SpecError(f"hw/formal.json: seeded bug '{bug['bug']}': no check of {bug['unit']} to run it with")
         work = scratch / f"bug{i}"
         depth = c.get("depths", [None])[0]
         parameters = dict(c.get("parameters", {}), **({"DEPTH": depth} if depth else {}))
         base = dict(unit=c["unit"], top=c["top"], instance=c["instance"] + (f", DEPTH {depth}" if depth else ""),
                     method=c["method"], k=c.get("k"), bmc=max(c.get("bmc", 0), c.get("k", 0)), also=c.get("also", []),
                     parameters=parameters, pkg_file=pkg_files[c["instance"]],
-                    src_dir=str(sources(c["unit"], bug, work)), bug=bug["bug"], labels=properties(c["unit"], c["top"]))
+                    src_dir=str(sources(c["unit"], bug, work)), bug=bug["bug"], defines=c.get("defines", []),
+                    labels=properties(c["unit"], c["top"], c.get("defines", [])))
+        base["prove"] = [(l, t) for l, t in base["labels"] if l in c.get("properties", [l])]
         bugs.append([dict(base, work=str(work / "run"))])
     return proofs, bugs
 
@@ -315,8 +365,13 @@ def main():
     if unknown:
         print(f"formal.py: no checks for unit(s) {', '.join(sorted(unknown))} in hw/formal.json", file=sys.stderr)
         return 2
+    # The runs' models and logs: kept under --out (OUT/runs), else in a temporary folder.
+    keep = pathlib.Path(args.out).resolve() / "runs" if args.out else None
+    if keep:
+        shutil.rmtree(keep, ignore_errors=True)
+        keep.mkdir(parents=True)
     with tempfile.TemporaryDirectory(prefix="girtd_formal_") as tmp:
-        scratch = pathlib.Path(tmp)
+        scratch = keep or pathlib.Path(tmp)
         try:
             proofs, bugs = plan(spec, generated_pkg.read_text(), scratch, set(args.unit))
         except SpecError as e:
@@ -338,7 +393,7 @@ def main():
     rows, failures = [], 0
     for job in proofs:
         v = verdicts[id(job)]
-        for label, text in job["labels"]:
+        for label, text in job["prove"]:
             if job["method"] == "pdr" and label != job["label"]:
                 continue
             result = result_text(v, label)
@@ -362,7 +417,8 @@ def main():
     print("\n".join(md) + "\n\n" + summary)
     for r in rows + bug_rows:
         if "detail" in r:
-            print(f"formal: {r['unit']}: {r['detail']}", file=sys.stderr)
+            print(f"formal: {r['unit']}: {r['detail']}" + ("" if keep else " (run with --out DIR to keep the logs)"),
+                  file=sys.stderr)
     if args.out:
         out = pathlib.Path(args.out)
         out.mkdir(parents=True, exist_ok=True)

@@ -1,9 +1,11 @@
-// Formal properties of pixel_cache, included into it under `ifdef FORMAL`
+// Formal properties of pixel_cache, included into it under `ifdef FORMAL_PIXEL_CACHE
 // (tools/girtd formal; hw/formal.json lists the instances proven). Labelled
 // asserts are the properties; the comment after each is its table row.
 // The environment is the HAD's use of it: reset first; a load and a pixel
 // write never in the same tick (H_FETCH and H_ACCESS/H_BLEND); a pixel is
-// written only while its page is in the cache (the HAD fetched it first).
+// written only while its page is in the cache (the HAD fetched it first). The
+// HAD's proof asserts the first (had_load_or_write); the second is this
+// proof's assumption only (the cache has no port that says it).
 logic f_past_q = 1'b0;
 always_ff @(posedge clk_i) f_past_q <= 1'b1;
 always_comb begin

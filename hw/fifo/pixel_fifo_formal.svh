@@ -1,4 +1,4 @@
-// Formal properties of pixel_fifo, included into it under `ifdef FORMAL`
+// Formal properties of pixel_fifo, included into it under `ifdef FORMAL_PIXEL_FIFO
 // (tools/girtd formal; hw/formal.json lists the depths proven). Labelled
 // asserts are the properties; the comment after each is its table row.
 // The environment is the contract girtd_backend keeps (and the simulation

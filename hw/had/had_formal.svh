@@ -1,14 +1,17 @@
 // Formal properties of the HAD with its cache, included into had under
-// `ifdef FORMAL` (tools/girtd formal; hw/formal.json lists the instances).
+// `ifdef FORMAL_HAD (tools/girtd formal; hw/formal.json lists the instances).
 // Labelled asserts are the properties; the comment after each is its row.
-// Environment, as girtd_backend and the VRAM treat the HAD: reset first;
+// Environment, as girtd_backend and its harness treat the HAD: reset first;
 // the option and timing registers fixed; one base tick per edge (ticks_i = 1,
 // as in hardware); the FIFO's head held until popped; once a flush is asked
 // for and the FIFO has drained, no new pixel until the flush is done (the
-// back end flushes after the DDA has finished). The VRAM is abstract: it
-// takes a request when not busy, runs one operation at a time, ends each with
-// one done within F_VRAM_TICKS ticks, and is busy for other work (refresh,
-// scan-out) at most F_VRAM_TICKS ticks in a row; the data it returns is free.
+// harness flushes after the DDA has finished). The VRAM is abstract: it takes
+// a request when not busy, runs one operation at a time and ends each with
+// one done; the data it returns is free. For the safety properties it may take
+// any time; had_idle (FORMAL_HAD_LIVENESS) also needs it to end each operation
+// within F_VRAM_TICKS ticks and to be busy for other work (refresh, scan-out,
+// a clear) at most F_VRAM_TICKS ticks in a row, and its bound holds for that
+// VRAM only (the thesis' VRAM cycle is 44 ticks: see hw/README.md).
 localparam int F_VRAM_TICKS = 3;
 localparam int F_IDLE_BOUND = 96;  // ticks from the last input to idle (see had_idle)
 logic f_past_q = 1'b0;
@@ -40,8 +43,10 @@ always_comb begin
   // The VRAM: a done only for an operation in flight (which may hand over to the next on its last tick).
   if (vram_done_i) assume (f_vram_op_q);
   if (f_vram_op_q && !vram_done_i) assume (vram_busy_i);
+`ifdef FORMAL_HAD_LIVENESS
   if (32'(f_vram_age_q) >= F_VRAM_TICKS) assume (vram_done_i);
   if (32'(f_vram_other_q) >= F_VRAM_TICKS) assume (!vram_busy_i);
+`endif
 end
 
 // One pixel, chosen by the solver, followed: the value the HAD last wrote to
@@ -57,7 +62,7 @@ function automatic logic [girtd_pkg::CACHE_SLOT_W-1:0] f_slot_of(input logic [NW
   f_slot_of = girtd_pkg::CACHE_SLOT_W'(32'(page) % PAGES);
 endfunction
 logic [CW-1:0] f_value_q;
-logic f_in_cache_only_q, f_in_write_behind_q, f_flushed_q;
+logic f_in_cache_only_q, f_in_write_behind_q, f_flushed;
 logic f_vram_write, f_capture, f_mine;
 assign f_vram_write = vram_req_o && vram_we_o && !vram_busy_i && vram_page_o == f_page;
 assign f_capture = state_q == H_IDLE && miss_go && must_write_back && write_behind_i && victim_page == f_page;
@@ -71,11 +76,11 @@ always_ff @(posedge clk_i) begin
     if (f_capture && f_in_cache_only_q) f_in_write_behind_q <= 1'b1;
     else if (f_vram_write) f_in_write_behind_q <= 1'b0;
   end
-  f_flushed_q <= rst_ni && flush_pending_q && !flush_i && next_flush_done;
 end
-logic next_flush_done;  // this tick ends the frame-end flush
-assign next_flush_done = (flush_step && !flush_valid || state_q == H_FLUSH && (vram_done_i || !flush_write_back)) &&
-                         32'(flush_slot_q) == PAGES - 1;
+// The frame-end flush has just ended: the flush pending a tick ago is no more.
+logic f_flush_pending_q;
+always_ff @(posedge clk_i) f_flush_pending_q <= rst_ni && flush_pending_q;
+assign f_flushed = f_flush_pending_q && !flush_pending_q && !flush_i;
 
 // Ticks since the input stopped: the FIFO empty and no flush asked for.
 logic [7:0] f_quiet_q;
@@ -88,10 +93,16 @@ always_comb if (f_past_q && rst_ni) begin
     had_write_behind_data: assert (f_cell_of(victim_data) == f_value_q);  // the write-behind register takes the page as last written
   if (cache_load && f_slot_of(pix_page) == f_slot_of(f_page))
     had_no_lost_write: assert (!f_in_cache_only_q);  // a page with a written pixel is written back (or taken by write-behind) before its slot is reloaded
-  if (f_flushed_q)
+  if (f_flushed)
     had_flush_complete: assert (!f_in_cache_only_q && !f_in_write_behind_q);  // after the frame-end flush every written pixel is on its way to the VRAM
+  if (f_flushed)
+    had_flush_forgets: assert (!head_hit && !pf_valid_q && !pf_loading_q);  // after the flush no page of the frame is kept, cached or prefetched (any head pixel misses)
+  had_pop_not_empty: assert (!fifo_pop_o || !fifo_empty_i);  // never pops an empty FIFO
+  had_load_or_write: assert (!(cache_load && cache_write));  // never loads a page and writes a pixel in the same tick (the cache's contract)
+`ifdef FORMAL_HAD_LIVENESS
   if (32'(f_quiet_q) >= F_IDLE_BOUND && !flush_i)
-    had_idle: assert (idle_o);  // input stopped: idle (flush done, write-behind and prefetch drained) within F_IDLE_BOUND ticks
+    had_idle: assert (idle_o);  // input stopped: idle (flush done, write-behind and prefetch drained) within F_IDLE_BOUND ticks, for a VRAM that answers within F_VRAM_TICKS
+`endif
   if (f_in_write_behind_q)
     had_write_behind_held: assert (wb_pending_q && wb_page_q == f_page && f_cell_of(wb_data_q) == f_value_q);  // the write-behind register holds its page until it is written
 end

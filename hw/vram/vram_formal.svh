@@ -1,4 +1,4 @@
-// Formal properties of vram, included into it under `ifdef FORMAL` (tools/girtd
+// Formal properties of vram, included into it under `ifdef FORMAL_VRAM (tools/girtd
 // formal proves them on the reduced instance hw/formal.json names: a screen
 // and pages small enough for the clear's loop over every word to be unrolled;
 // nothing here depends on the sizes but the loop bounds and the address split).
@@ -6,7 +6,12 @@
 // The environment: reset first; one base tick per edge (ticks_i = 1, as in
 // hardware: the tick warp is a simulation shortcut, checked by regression
 // against stepping); the timing registers fixed; no page request on the tick
-// a clear is asked for (the contract the simulation check above flags).
+// a clear is asked for (the contract the simulation check above flags); from
+// the tick a clear is asked for until it is done, no swap (the VRAM fixes the
+// buffer when the clear starts) and the background held (the harness clears
+// with the back end idle, before the frame's first triangle).
+// The checker keeps its own front buffer, operation and clear, from the
+// ports: which buffer a write or a clear lands in is not taken from the VRAM.
 logic f_past_q = 1'b0;
 always_ff @(posedge clk_i) f_past_q <= 1'b1;
 logic [girtd_pkg::TIME_W-1:0] f_cycle_q;
@@ -16,7 +21,8 @@ always_comb begin
   if (!f_past_q) assume (!rst_ni);
   assume (ticks_i == LT'(1));
   if (f_past_q) assume ({cycle_ticks_i, clear_ticks_i, steal_period_ticks_i} == {f_cycle_q, f_clear_ticks_q, f_steal_q});
-  assume (!(clear_i && req_i));
+  assume (!(clear_i && (req_i || swap_i)));
+  if (f_clearing_q) assume (!swap_i && !clear_i && background_i == f_clear_bg_q);
 end
 
 // One word, chosen by the solver, followed apart from the array: each of its
@@ -27,18 +33,45 @@ function automatic logic [CW-1:0] f_cell_of(input logic [PW-1:0] data);  // cons
   f_cell_of = '0;
   for (int i = 0; i < N; i++) if (f_index == IW'(i)) f_cell_of = data[i*CW+:CW];
 endfunction
+// The ports' view: the buffer shown, a page operation taken (on the back
+// buffer of that tick), a clear asked for (of the back buffer and background
+// of that tick) until the VRAM is done with it.
+logic f_front_q, f_take, f_op_we_q, f_op_buf_q, f_clearing_q, f_clear_buf_q;
+logic [girtd_pkg::PAGE_NUMBER_W-1:0] f_op_page_q;
+logic [PW-1:0] f_op_data_q;
+logic [RGB-1:0] f_clear_bg_q;
+assign f_take = req_i && !busy_o && !clear_i;
+logic f_clear_ends;  // the clear's last tick (when the VRAM writes the array)
+assign f_clear_ends = f_clearing_q && finishing && clearing_q;
+always_ff @(posedge clk_i) begin
+  if (!rst_ni) {f_front_q, f_clearing_q} <= '0;
+  else begin
+    if (swap_i) f_front_q <= !f_front_q;
+    if (clear_i) {f_clearing_q, f_clear_buf_q, f_clear_bg_q} <= {1'b1, !f_front_q, background_i};
+    else if (f_clear_ends) f_clearing_q <= 1'b0;
+  end
+  if (f_take) {f_op_we_q, f_op_buf_q, f_op_page_q, f_op_data_q} <= {we_i, !f_front_q, page_i, wdata_i};
+end
+
+// One word, chosen by the solver, followed apart from the array: each of its
+// fields as last written (by a page write or a clear), once known.
 logic [RGB-1:0] f_rgb_q[2], f_rgb_d[2];
 logic [ZO-1:0] f_z_q, f_z_d;
 logic [1:0] f_rgb_known_q, f_rgb_known_d;
 logic f_z_known_q, f_z_known_d;
 logic [CW-1:0] f_written;
-assign f_written = f_cell_of(wdata_q);
+assign f_written = f_cell_of(f_op_data_q);
 always_comb begin  // the word after this tick's write, if any
   {f_rgb_d[0], f_rgb_d[1], f_z_d, f_rgb_known_d, f_z_known_d} = {f_rgb_q[0], f_rgb_q[1], f_z_q, f_rgb_known_q, f_z_known_q};
-  if (rst_ni && finishing && !stealing_q && (clearing_q || (we_q && page_q == f_page))) begin
-    f_rgb_d[buf_q] = clearing_q ? bg_q : f_written[ZO+:RGB];
-    f_rgb_known_d[buf_q] = 1'b1;
-    f_z_d = clearing_q ? Z_CLEAR : f_written[ZO-1:0];
+  if (rst_ni && f_clear_ends) begin
+    f_rgb_d[f_clear_buf_q] = f_clear_bg_q;
+    f_rgb_known_d[f_clear_buf_q] = 1'b1;
+    f_z_d = Z_CLEAR;
+    f_z_known_d = 1'b1;
+  end else if (rst_ni && done_o && f_op_we_q && f_op_page_q == f_page) begin
+    f_rgb_d[f_op_buf_q] = f_written[ZO+:RGB];
+    f_rgb_known_d[f_op_buf_q] = 1'b1;
+    f_z_d = f_written[ZO-1:0];
     f_z_known_d = 1'b1;
   end
 end
@@ -49,11 +82,10 @@ end
 
 // A fetch of the word's page: what it must return (the back buffer and Z as
 // they are once this tick's write is done), checked when the fetch ends.
-logic f_reading_q, f_expect_rgb_known_q, f_expect_z_known_q, f_cleared_q, f_clear_buf_q;
+logic f_reading_q, f_expect_rgb_known_q, f_expect_z_known_q, f_cleared_q;
 logic [RGB-1:0] f_expect_rgb_q;
 logic [ZO-1:0] f_expect_z_q;
 logic [1:0] f_ops_q;  // page operations taken and not yet done
-logic [RGB-1:0] f_bg_q;
 always_ff @(posedge clk_i) begin
   if (!rst_ni) begin
     f_reading_q <= 1'b0;
@@ -61,17 +93,15 @@ always_ff @(posedge clk_i) begin
     f_cleared_q <= 1'b0;
   end else begin
     if (done_o) f_reading_q <= 1'b0;
-    if (accepting && !we_i && page_i == f_page) begin
+    if (f_take && !we_i && page_i == f_page) begin
       f_reading_q <= 1'b1;
-      f_expect_rgb_q <= f_rgb_d[!front_q];
-      f_expect_rgb_known_q <= f_rgb_known_d[!front_q];
+      f_expect_rgb_q <= f_rgb_d[!f_front_q];
+      f_expect_rgb_known_q <= f_rgb_known_d[!f_front_q];
       f_expect_z_q <= f_z_d;
       f_expect_z_known_q <= f_z_known_d;
     end
-    f_ops_q <= f_ops_q + 2'(accepting) - 2'(done_o);
-    f_cleared_q <= finishing && clearing_q;
-    f_clear_buf_q <= buf_q;
-    f_bg_q <= bg_q;
+    f_ops_q <= f_ops_q + 2'(f_take) - 2'(done_o);
+    f_cleared_q <= f_clear_ends;
   end
 end
 
@@ -85,7 +115,9 @@ always_comb if (f_past_q && rst_ni) begin
     vram_read_z: assert (!f_expect_z_known_q || f_read[ZO-1:0] == f_expect_z_q);  // a fetch returns the Z last written to each word
   end
   if (f_cleared_q)
-    vram_clear: assert ((f_clear_buf_q ? f_word[B1+:RGB] : f_word[B0+:RGB]) == f_bg_q && f_word[ZL+:ZO] == Z_CLEAR);  // a clear sets every word's back buffer to the background and its Z to Z_CLEAR
+    vram_clear: assert ((f_clear_buf_q ? f_word[B1+:RGB] : f_word[B0+:RGB]) == f_clear_bg_q && f_word[ZL+:ZO] == Z_CLEAR);  // a clear sets every word's back buffer (when it was asked for) to the background and its Z to Z_CLEAR
+  vram_front: assert (front_o == f_front_q);  // the buffer shown changes exactly at each swap
+  vram_take: assert (accepting == f_take);  // a page request is taken exactly when it is made while busy_o is low (and no clear is asked for)
   vram_one_at_a_time: assert (f_ops_q == 2'(busy_q && !clearing_q && !stealing_q) && (!done_o || f_ops_q == 2'd1));  // one page operation at a time, each ended by exactly one done
   vram_word: assert ((!f_rgb_known_q[0] || f_word[B0+:RGB] == f_rgb_q[0]) && (!f_rgb_known_q[1] || f_word[B1+:RGB] == f_rgb_q[1]) &&
                      (!f_z_known_q || f_word[ZL+:ZO] == f_z_q));  // the array holds each word's fields as last written
