@@ -135,9 +135,9 @@ def run(argv, cwd, log):
 def prove_induction(job, work):
     """Every property at once: BMC of the first ticks from reset (at least k), then the k-induction step."""
     script = yosys_read(job)
-    # The cache's two-dimensional arrays are not supported as SMT arrays by yosys 0.23: bits instead.
     script += "tee -q -o asserts.txt select -list t:$assert\n"
-    script += ("memory_map\nopt\n" if job["unit"] != "fifo" else "") + "async2sync\ndffunmap\nwrite_smt2 -wires model.smt2\n"
+    # Memories as SMT arrays where yosys 0.23 can (one-dimensional: the FIFO's), else as bits, unrolled for z3.
+    script += ("" if job["smt_arrays"] else "memory_map\nopt\n") + "async2sync\ndffunmap\nwrite_smt2 -wires model.smt2\n"
     (work / "model.ys").write_text(script)
     p = run(["yosys", "-q", "model.ys"], work, "yosys.log")
     if p is None or p.returncode:
@@ -147,7 +147,7 @@ def prove_induction(job, work):
     if in_model != {label for label, _ in job["labels"]}:
         return {"error": "the model's asserts %s are not the properties %s" % (
             sorted(in_model), sorted(label for label, _ in job["labels"]))}
-    unroll = ["--unroll"] if job["unit"] != "fifo" else []
+    unroll = [] if job["smt_arrays"] else ["--unroll"]
     steps = [("base", [], job["bmc"])] + ([("induction", ["-i"], job["k"])] if job["k"] else [])
     for step, extra, depth in steps:
         p = run(["yosys-smtbmc", "-s", "z3", *unroll, *extra, "-t", str(depth), "model.smt2"], work, f"{step}.log")
@@ -227,8 +227,23 @@ def sources(unit, bug, work):
     return copy
 
 
+def job(c, depth, pkg_files, src_dir):
+    """What every run of check C (at built DEPTH, from the sources in SRC_DIR) needs."""
+    labels = properties(c["unit"], c["top"], c.get("defines", []))
+    prove = [(l, t) for l, t in labels if l in c.get("properties", [l])]
+    if len(prove) != len(c.get("properties", prove)):
+        raise SpecError(f"hw/formal.json: a check of {c['unit']} names properties its file does not have")
+    check_instance = c["instance"] + (f", {c['note']}" if "note" in c else "")
+    return dict(unit=c["unit"], top=c["top"], check_instance=check_instance, depth=depth,
+                instance=check_instance + (f", DEPTH {depth}" if depth else ""),
+                method=c["method"], k=c.get("k"), bmc=max(c.get("bmc", 0), c.get("k", 0)),
+                smt_arrays=c.get("smt_arrays", False), also=c.get("also", []), defines=c.get("defines", []),
+                parameters=dict(c.get("parameters", {}), **({"DEPTH": depth} if depth else {})),
+                pkg_file=pkg_files[c["instance"]], src_dir=str(src_dir), labels=labels, prove=prove)
+
+
 def plan(spec, generated, scratch, units):
-    """The proof jobs and the seeded-bug jobs."""
+    """The proof jobs and the seeded-bug jobs (one each)."""
     pkg_files = {}
     for name, overrides in spec["instances"].items():
         f = scratch / f"pkg_{name}.sv"
@@ -238,23 +253,14 @@ def plan(spec, generated, scratch, units):
     for index, c in enumerate(spec["checks"]):
         if units and c["unit"] not in units:
             continue
-        labels = properties(c["unit"], c["top"], c.get("defines", []))
-        prove = [(l, t) for l, t in labels if l in c.get("properties", [l])]
-        if len(prove) != len(c.get("properties", prove)):
-            raise SpecError(f"hw/formal.json: a check of {c['unit']} names properties its file does not have")
         for depth in c.get("depths", [None]):
-            parameters = dict(c.get("parameters", {}), **({"DEPTH": depth} if depth else {}))
-            check_instance = c["instance"] + (f", {c['note']}" if "note" in c else "")
-            instance = check_instance + (f", DEPTH {depth}" if depth else "")
-            base = dict(unit=c["unit"], top=c["top"], instance=instance, check_instance=check_instance, depth=depth,
-                        defines=c.get("defines", []), prove=prove, method=c["method"], k=c.get("k"), bmc=max(c.get("bmc", 0), c.get("k", 0)), also=c.get("also", []),
-                        parameters=parameters, pkg_file=pkg_files[c["instance"]],
-                        src_dir=str(ROOT / "hw" / c["unit"]), labels=labels)
+            base = job(c, depth, pkg_files, ROOT / "hw" / c["unit"])
             tag = re.sub(r"\W+", "_", f"check{index}_{c['unit']}_{depth or ''}")
             if c["method"] == "induction":
                 proofs.append(dict(base, work=str(scratch / tag)))
-            else:
-                proofs += [dict(base, label=l, work=str(scratch / f"{tag}_{l}")) for l, _ in prove]
+            else:  # one run per property
+                proofs += [dict(base, label=l, prove=[(l, t)], work=str(scratch / f"{tag}_{l}"))
+                           for l, t in base["prove"]]
     for i, bug in enumerate(spec["seeded_bugs"]):
         if units and bug["unit"] not in units:
             continue
@@ -265,15 +271,8 @@ def plan(spec, generated, scratch, units):
         if c is None:
             raise SpecError(f"hw/formal.json: seeded bug '{bug['bug']}': no check of {bug['unit']} to run it with")
         work = scratch / f"bug{i}"
-        depth = c.get("depths", [None])[0]
-        parameters = dict(c.get("parameters", {}), **({"DEPTH": depth} if depth else {}))
-        base = dict(unit=c["unit"], top=c["top"], instance=c["instance"] + (f", DEPTH {depth}" if depth else ""),
-                    method=c["method"], k=c.get("k"), bmc=max(c.get("bmc", 0), c.get("k", 0)), also=c.get("also", []),
-                    parameters=parameters, pkg_file=pkg_files[c["instance"]],
-                    src_dir=str(sources(c["unit"], bug, work)), bug=bug["bug"], defines=c.get("defines", []),
-                    labels=properties(c["unit"], c["top"], c.get("defines", [])))
-        base["prove"] = [(l, t) for l, t in base["labels"] if l in c.get("properties", [l])]
-        bugs.append([dict(base, work=str(work / "run"))])
+        bugs.append(dict(job(c, c.get("depths", [None])[0], pkg_files, sources(c["unit"], bug, work)),
+                         bug=bug["bug"], work=str(work / "run")))
     return proofs, bugs
 
 
@@ -377,12 +376,11 @@ def main():
         except SpecError as e:
             print(f"formal.py: {e}", file=sys.stderr)
             return 2
-        flat_bugs = [j for group in bugs for j in group]
-        total = len(proofs) + len(flat_bugs)
+        total = len(proofs) + len(bugs)
         print(f"formal: {len(proofs)} proof runs and {len(bugs)} seeded bugs on {args.jobs} job(s)", file=sys.stderr)
         verdicts = {}
         with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-            futures = {pool.submit(run_job, j): id(j) for j in proofs + flat_bugs}
+            futures = {pool.submit(run_job, j): id(j) for j in proofs + bugs}
             for n, f in enumerate(concurrent.futures.as_completed(futures), 1):
                 verdicts[futures[f]] = f.result()
                 if sys.stderr.isatty():
@@ -391,27 +389,21 @@ def main():
             print(file=sys.stderr)
 
     rows, failures = [], 0
-    for job in proofs:
-        v = verdicts[id(job)]
-        for label, text in job["prove"]:
-            if job["method"] == "pdr" and label != job["label"]:
-                continue
+    for proof in proofs:
+        v = verdicts[id(proof)]
+        for label, text in proof["prove"]:
             result = result_text(v, label)
             failures += result != "proven"
-            rows.append(dict(property=label, description=text, unit=job["unit"], instance=job["instance"],
-                             check_instance=job["check_instance"], depth=job["depth"],
-                             method=method_text(job), result=result, seconds=v["seconds"],
+            rows.append(dict(property=label, description=text, unit=proof["unit"], instance=proof["instance"],
+                             check_instance=proof["check_instance"], depth=proof["depth"],
+                             method=method_text(proof), result=result, seconds=v["seconds"],
                              **({"detail": v["error"]} if "error" in v else {})))
     bug_rows = []
-    for group in bugs:
-        caught = [verdicts[id(j)] for j in group if "failed" in verdicts[id(j)]]
-        errors = [verdicts[id(j)]["error"] for j in group if "error" in verdicts[id(j)]]
-        job = group[0]
-        bug_rows.append(dict(unit=job["unit"], bug=job["bug"], instance=job["instance"],
-                             caught_by=caught[0]["failed"] if caught else None,
-                             seconds=round(sum(verdicts[id(j)]["seconds"] for j in group), 1),
-                             **({"detail": errors[0]} if errors and not caught else {})))
-        failures += not caught
+    for bug in bugs:
+        v = verdicts[id(bug)]
+        bug_rows.append(dict(unit=bug["unit"], bug=bug["bug"], instance=bug["instance"], caught_by=v.get("failed"),
+                             seconds=v["seconds"], **({"detail": v["error"]} if "error" in v else {})))
+        failures += "failed" not in v
 
     md, summary = render(rows, bug_rows)
     print("\n".join(md) + "\n\n" + summary)

@@ -20,7 +20,6 @@ logic [girtd_pkg::TIME_W-1:0] f_access_q, f_blend_q;
 logic [3:0] f_options_q;
 logic [girtd_pkg::FIFO_W-1:0] f_head_q;
 logic f_head_held_q, f_draining_q, f_vram_op_q;
-logic [3:0] f_vram_age_q, f_vram_other_q;
 always_ff @(posedge clk_i) begin
   {f_access_q, f_blend_q} <= {access_ticks_i, blend_ticks_i};
   f_options_q <= {one_minus_exact_i, write_behind_i, prefetch_i, dirty_bits_i};
@@ -30,8 +29,6 @@ always_ff @(posedge clk_i) begin
   if (!rst_ni) f_vram_op_q <= 1'b0;
   else if (vram_req_o && !vram_busy_i) f_vram_op_q <= 1'b1;
   else if (vram_done_i) f_vram_op_q <= 1'b0;
-  f_vram_age_q <= !rst_ni || !f_vram_op_q || vram_done_i ? '0 : f_vram_age_q + 1'b1;
-  f_vram_other_q <= !rst_ni || f_vram_op_q || !vram_busy_i ? '0 : f_vram_other_q + 1'b1;
 end
 always_comb begin
   if (!f_past_q) assume (!rst_ni);
@@ -43,11 +40,24 @@ always_comb begin
   // The VRAM: a done only for an operation in flight (which may hand over to the next on its last tick).
   if (vram_done_i) assume (f_vram_op_q);
   if (f_vram_op_q && !vram_done_i) assume (vram_busy_i);
+end
+
 `ifdef FORMAL_HAD_LIVENESS
+// For had_idle only: the VRAM answers within F_VRAM_TICKS and is busy for
+// other work at most F_VRAM_TICKS in a row; the ticks since the input stopped
+// (the FIFO empty and no flush asked for).
+logic [3:0] f_vram_age_q, f_vram_other_q;
+logic [7:0] f_quiet_q;
+always_ff @(posedge clk_i) begin
+  f_vram_age_q <= !rst_ni || !f_vram_op_q || vram_done_i ? '0 : f_vram_age_q + 1'b1;
+  f_vram_other_q <= !rst_ni || f_vram_op_q || !vram_busy_i ? '0 : f_vram_other_q + 1'b1;
+  f_quiet_q <= !rst_ni || !fifo_empty_i || flush_i ? '0 : f_quiet_q + 8'(f_quiet_q != '1);
+end
+always_comb begin
   if (32'(f_vram_age_q) >= F_VRAM_TICKS) assume (vram_done_i);
   if (32'(f_vram_other_q) >= F_VRAM_TICKS) assume (!vram_busy_i);
-`endif
 end
+`endif
 
 // One pixel, chosen by the solver, followed: the value the HAD last wrote to
 // its cell, and where that value is while it is not yet in the VRAM (only in
@@ -81,10 +91,6 @@ end
 logic f_flush_pending_q;
 always_ff @(posedge clk_i) f_flush_pending_q <= rst_ni && flush_pending_q;
 assign f_flushed = f_flush_pending_q && !flush_pending_q && !flush_i;
-
-// Ticks since the input stopped: the FIFO empty and no flush asked for.
-logic [7:0] f_quiet_q;
-always_ff @(posedge clk_i) f_quiet_q <= !rst_ni || !fifo_empty_i || flush_i ? '0 : f_quiet_q + 8'(f_quiet_q != '1);
 
 always_comb if (f_past_q && rst_ni) begin
   if (f_vram_write && (f_in_cache_only_q || f_in_write_behind_q))
