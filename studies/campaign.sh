@@ -19,16 +19,17 @@ GIRTD=tools/girtd
 OUT=out/campaign
 PYTHON=/usr/bin/python3
 
-# Each step and the results/ entries it records, in the order they run (the
-# study's stages in their order; the pages after the runs they show).
+# Each step and the results/ entries it records, in the order they run: the
+# wall-time measurements first (keep the machine otherwise idle for them), the
+# study's stages in their order, the pages after the runs they show.
 STEPS=(
+  "bench:bench.json"
+  "speed:speed"
+  "scale:scale"
   "accuracy_precision:accuracy/precision_color accuracy/precision_d accuracy/precision_t accuracy/precision_z"
   "accuracy_rtl:accuracy/rtl_color accuracy/rtl_d accuracy/rtl_z"
   "accuracy_shortcuts:accuracy/shortcut_nf_prom accuracy/shortcut_one_minus_nf accuracy/shortcut_q"
   "accuracy_timing:accuracy/timing"
-  "bench:bench.json"
-  "speed:speed"
-  "scale:scale"
   "pipeline_options:pipeline_options"
   "memory_side:sweeps/memory_side"
   "study:sweeps/study_thesis sweeps/study_coarse sweeps/study_refine sweeps/study_final sweeps/study_path sweeps/study_check"
