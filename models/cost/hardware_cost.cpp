@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "config/built_stages.hpp"
 #include "layout/rtl_layout.hpp"
 
 namespace girtd {
@@ -36,7 +37,8 @@ HardwareCost hardware_cost(const Params& p) {
   if (p.had_prefetch) c.prefetch_bits = page_bits + l.page.number_bits + 2;
   const double frame_bits = double(p.screen_width) * p.screen_height * l.vram.width;  // two RGB buffers and Z
   c.vram_chips = int(std::max(chips(frame_bits, kVramBitsPerChip), chips(page_bits, 4)));
-  for (const auto& [stage, rate] : p.stage_rate_flops_per_s) c.front_end_boards += int(std::ceil(rate / kBoardFlopsPerS));
+  for (const auto& [stage, rate] : p.stage_rate_flops_per_s)
+    if (stage_built(p, stage)) c.front_end_boards += int(std::ceil(rate / kBoardFlopsPerS));
   static const Params thesis = Params::defaults();
   c.dda_clock_class = p.dda_clock_ns < thesis.dda_clock_ns ? "ECL" : "TTL";
   c.had_clock_class =

@@ -13,8 +13,9 @@
 //   per pixel of the page);
 // - the write-behind register and the prefetch buffer: a page of cells and
 //   its page number each, in registers;
-// - front-end boards: each stage is a board per 10 Mflop/s of its rate (the
-//   thesis' boards), rounded up, 60 chips each;
+// - front-end boards: each built stage (config/built_stages.hpp: the culling
+//   stage only when the config turns culling on) is a board per 10 Mflop/s
+//   of its rate (the thesis' boards), rounded up, 60 chips each;
 // - clock class: a DDA clock under 35 ns or a HAD access under 25 ns needs
 //   ECL for that unit (the thesis' TTL limits): its chips count twice.
 #pragma once

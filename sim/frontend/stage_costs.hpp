@@ -30,7 +30,8 @@ struct OpCount {
 inline constexpr double kDivFlops = 4, kSqrtFlops = 8;
 
 // The culling stage, in front of lighting: an object's bounding sphere
-// against the view volume (culling.objects); a polygon's back-face test.
+// against the view volume (culling.objects); a polygon's back-face test (on
+// the lighting board where the config builds no culling stage).
 OpCount object_culling_ops();
 OpCount back_face_ops(size_t corners);
 // A polygon of `corners` corners in world space: the no-area test and the

@@ -6,6 +6,7 @@
 
 #include "backends/front_end_runner.hpp"
 #include "common/triangle_setup.hpp"
+#include "config/built_stages.hpp"
 #include "pipeline/pipeline_elaboration.hpp"
 #include "frontend/stage_costs.hpp"
 
@@ -22,15 +23,23 @@ void PipelineElaboration::build_from_polygons() {
 
   // Culling, in front of lighting: an object's bounding sphere (when
   // culling.objects is on), then each polygon's back-face test (when the
-  // frame or culling.back_faces asks for it).
+  // frame or culling.back_faces asks for it). Where the config builds no
+  // culling stage (models/config/built_stages.hpp) this one takes no time and
+  // passes every polygon on: the lighting board tests the back faces an
+  // input asks to cull.
+  const bool culling_built = culling_stage_built(p_);
   FrontEndStages& cull = front_end_instance();
   auto& cull_out = stage<WorldObject, size_t>(
       "culling", src,
-      [&cull](size_t, const WorldObject& o, Work<size_t>& w) {
+      [&cull, culling_built](size_t, const WorldObject& o, Work<size_t>& w) {
         w.push_back({cull.options().cull_objects ? object_culling_ops().flops() : 0, std::nullopt});
         if (!cull.keep_object(o)) return;
         const WorldFrame& f = cull.frame();
         for (size_t i = o.first; i < o.first + o.count; ++i) {
+          if (!culling_built) {
+            w.push_back({0, i});
+            continue;
+          }
           const double test = cull.back_face_test_on() ? back_face_ops(f.polygons[i].p.size()).flops() : 0;
           std::optional<size_t> kept;
           if (cull.keep_polygon(i)) kept = i;
@@ -42,9 +51,13 @@ void PipelineElaboration::build_from_polygons() {
   FrontEndStages& lit = front_end_instance();
   auto& lit_out = stage<size_t, FrontPolygon>(
       "lighting", cull_out,
-      [&lit](size_t, const size_t& i, Work<FrontPolygon>& w) {
+      [&lit, culling_built](size_t, const size_t& i, Work<FrontPolygon>& w) {
         const WorldFrame& f = lit.frame();
         const size_t corners = f.polygons[i].p.size();
+        if (!culling_built && lit.back_face_test_on()) {
+          w.push_back({back_face_ops(corners).flops(), std::nullopt});
+          if (!lit.keep_polygon(i)) return;
+        }
         w.push_back({lighting_ops(corners, f.lights.directional.size()).flops(), lit.light(i)});
       },
       [this, &lit](size_t frame, Work<FrontPolygon>&) { begin(lit, frame); });

@@ -245,7 +245,9 @@ std::vector<ReportKey> make_keys() {
                    &FrontendCounts::back_faces_exempt),
       key("frontend.culling_flops_saved", "flop",
           "what the polygons culling removed would have cost in lighting, view and the depth clip's test "
-          "(`sim/frontend/stage_costs.hpp` culled_ops); the culling stage's own flops are `stages.culling.flops`",
+          "(`sim/frontend/stage_costs.hpp` culled_ops); the tests themselves are in `stages.culling.flops`, or in "
+          "`stages.lighting.flops` where the config builds no culling stage (`culling.objects` false, "
+          "`culling.back_faces` not always)",
           kEvery, [](auto& r) {
             const FrontendCounts& f = *r.s.frontend;
             return json(culled_ops(f.object_culled_polygons, f.object_culled_corners, f.object_culled_corner_lights).flops() +

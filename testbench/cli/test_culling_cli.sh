@@ -2,8 +2,10 @@
 # Culling in front of lighting (config `culling`, config/presets/culling.json):
 # on traces/scenes/out_of_view.json, bounding-sphere culling removes the eight
 # models out of view before lighting, leaves the frame as it was and at
-# least 1.5x the modeled rate; a forced back-face cull keeps transparent
-# surfaces' back faces and warns; polygon dumps keep their objects.
+# least 1.5x the modeled rate; without a culling stage (the thesis' design)
+# the lighting board tests the back faces an input asks to cull, at the same
+# flops; a forced back-face cull keeps transparent surfaces' back faces and
+# warns; polygon dumps keep their objects.
 # Usage: test_culling_cli.sh GIRTD_BINARY REPO_ROOT
 source "$(dirname "$0")/cli_lib.sh" "$1" "$2"
 
@@ -30,6 +32,22 @@ jq -n --slurpfile a "$TMP/approx/report.json" --slurpfile b "$TMP/approx-obj/rep
    and $b[0].stages.culling.flops == 370 and $a[0].stages.culling.flops == 0' >/dev/null \
   && ok || bad "approx: modeled rate $(jq .modeled_mpixels_per_s "$TMP/approx/report.json") -> \
 $(jq .modeled_mpixels_per_s "$TMP/approx-obj/report.json"), culling flops $(jq .stages.culling.flops "$TMP/approx-obj/report.json")"
+
+# No culling stage in the thesis' design: the back faces traces/scenes/culling.json
+# asks to cull are tested on the lighting board, at the culling stage's flops.
+# Built (back faces "always"), the culling stage does the same tests and lighting
+# no longer does: the same frame, the same culled polygons, the flops moved.
+printf '{"culling": {"back_faces": "always"}}\n' > "$TMP/always.json"
+"$GIRTD" render traces/scenes/culling.json --backend approx --out "$TMP/bf-off" --quiet || bad "culling.json failed"
+"$GIRTD" render traces/scenes/culling.json --backend approx --config "$TMP/always.json" --out "$TMP/bf-on" --quiet \
+  || bad "culling.json with back faces always failed"
+jq -n --slurpfile a "$TMP/bf-off/report.json" --slurpfile b "$TMP/bf-on/report.json" \
+  '$a[0].image_sha256 == $b[0].image_sha256 and $a[0].frontend.culled == $b[0].frontend.culled
+   and $a[0].frontend.culled > 0 and $a[0].stages.culling.flops == 0 and $b[0].stages.culling.flops > 0
+   and $a[0].stages.lighting.flops - $b[0].stages.lighting.flops == $b[0].stages.culling.flops' >/dev/null \
+  && ok || bad "back-face tests without a culling stage: culling $(jq .stages.culling.flops "$TMP/bf-off/report.json") \
+-> $(jq .stages.culling.flops "$TMP/bf-on/report.json"), lighting $(jq .stages.lighting.flops "$TMP/bf-off/report.json") \
+-> $(jq .stages.lighting.flops "$TMP/bf-on/report.json")"
 
 # A forced back-face cull: the demo's glass sphere is transparent, so its
 # back faces stay, counted and warned.

@@ -23,12 +23,31 @@ TEST_CASE("hardware cost of the thesis' design, by hand", "[cost]") {
   CHECK(c.had_chips == 83);
   // Two RGB buffers and Z: 1 M x 64 bits / 256 Kbit = 256 VRAM chips.
   CHECK(c.vram_chips == 256);
-  // Nine stages of 10 Mflop/s: one board each.
-  CHECK(c.front_end_boards == 9);
+  // Eight stages of 10 Mflop/s, one board each; no culling stage is built.
+  CHECK(c.front_end_boards == 8);
   // The FIFO: 32 words of the 69-bit FIFO word, 64 x 4 bits a chip: 1 x 18.
   CHECK(c.fifo_chips == 18);
-  // 158 + 18 + 83 + 256 + 540, as models/cost/README.md says.
-  CHECK(c.cost == 1055);
+  // 158 + 18 + 83 + 256 + 480, as models/cost/README.md says.
+  CHECK(c.cost == 995);
+}
+
+TEST_CASE("hardware cost: a stage is charged only when built", "[cost]") {
+  const HardwareCost thesis = hardware_cost(Params::defaults());
+  // Object culling, or back faces culled in every frame, builds the culling
+  // stage: one more 10 Mflop/s board of 60 chips.
+  for (const nlohmann::json& on : {nlohmann::json{{"objects", true}}, nlohmann::json{{"back_faces", "always"}}}) {
+    const HardwareCost c = hardware_cost(Params::with_overrides({{"culling", on}}, "test"));
+    CHECK(c.front_end_boards == 9);
+    CHECK(c.cost == 995 + 60);
+  }
+  // The culling stage's rate costs nothing while it is not built ...
+  const HardwareCost fast_off = hardware_cost(
+      Params::with_overrides({{"pipeline", {{"flops_per_s", {{"culling", 40e6}}}}}}, "test"));
+  CHECK(fast_off.cost == thesis.cost);
+  // ... and its boards once it is: 40 Mflop/s is four.
+  const HardwareCost fast_on = hardware_cost(Params::with_overrides(
+      {{"culling", {{"objects", true}}}, {"pipeline", {{"flops_per_s", {{"culling", 40e6}}}}}}, "test"));
+  CHECK(fast_on.cost == 995 + 4 * 60);
 }
 
 TEST_CASE("hardware cost: write-behind adds a page register, ECL doubles the DDA", "[cost]") {
