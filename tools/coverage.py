@@ -12,17 +12,20 @@ unit gets one line:
     coverage: UNIT lines=NN.N% points=HIT/TOTAL
 
 lines: of the source lines of hw/UNIT/*.sv that carry a line or branch
-coverage point, those some run reached (a line reached in any of the unit's
-builds counts); points: the unit's SystemVerilog cover points (its bind
-file, testbench/units/UNIT/*_cover.sv), each hit at least once by one of
-the unit's builds. A second line gives the
+coverage point, those where every point was reached (an if's two branches
+share a line) by some run of one of the unit's builds; points: the `cover
+property` statements of the unit's bind file (testbench/units/UNIT/*_cover.sv),
+each hit at least once by one of the unit's builds (a statement the data
+lacks counts as never hit). A second line gives the
 toggle coverage. Lines excluded are not counted, and each is listed with
 its reason: lines between `verilator coverage_off` and `coverage_on` in a
 unit's source (the reason in the comment on the line above), and lines
 testbench/units/UNIT/coverage_exclusions.json names by a pattern (a file
 beside the bench, so that the synthesised RTL carries no bench markings;
 each entry states how many lines it matches, and a count that no longer
-holds is an error).
+holds is an error). An excluded line that a run reaches fails the check:
+it was excluded as unreachable (unless its entry says why it is reached
+before reset, at power-up).
 Exit 1 when a bench disagrees with its model, a unit is under 95 % of its
 lines or a cover point is never hit.
 """
@@ -63,16 +66,20 @@ def excluded_spans(source):
         if "verilator coverage_off" in text:
             start, why = n, previous.strip().lstrip("/ ") if previous.strip().startswith("//") else ""
         elif "verilator coverage_on" in text and start is not None:
-            spans.append((start, n, why))
+            spans.append((start, n, why, ""))
             start = None
         previous = text
     return spans
 
 
 def listed_exclusions(unit, sources):
-    """(source, first, last, why) for each line testbench/units/UNIT/coverage_exclusions.json
-    excludes: {"file", "lines_matching" (a regular expression), "count" (how many
-    lines it must match: a stale entry is an error), "why"}."""
+    """(source, first, last, why, before_reset) for each line
+    testbench/units/UNIT/coverage_exclusions.json excludes: {"file",
+    "lines_matching" (a regular expression), "count" (how many lines it must
+    match: a stale entry is an error), "why", and optionally "before_reset":
+    why the line is reached before reset, at power-up, where a unit's state
+    is anything; those hits are then shown and allowed, and what holds after
+    reset must be asserted by the unit's bind file}."""
     path = UNITS / unit / "coverage_exclusions.json"
     if not path.exists():
         return []
@@ -85,41 +92,62 @@ def listed_exclusions(unit, sources):
         if len(lines) != e["count"]:
             raise SystemExit("%s: %r matches %d line(s) of %s, not %d: update the exclusion"
                              % (path.relative_to(ROOT), e["lines_matching"], len(lines), e["file"], e["count"]))
-        out += [(e["file"], n, n, e["why"]) for n in lines]
+        out += [(e["file"], n, n, e["why"], e.get("before_reset", "")) for n in lines]
+    return out
+
+
+def cover_statements(unit):
+    """(bind file name, line) of every `cover property` in testbench/units/UNIT/*_cover.sv."""
+    out = set()
+    for path in sorted((UNITS / unit).glob("*_cover.sv")):
+        for n, text in enumerate(path.read_text().splitlines(), 1):
+            if re.match(r"\s*cover property", text):
+                out.add((path.name, n))
     return out
 
 
 def report(unit, points):
     sources = {str(p.relative_to(ROOT)): p for p in sorted((ROOT / "hw" / unit).glob("*.sv"))}
     spans = {name: excluded_spans(path) for name, path in sources.items()}
-    for name, first, last, why in listed_exclusions(unit, sources):
-        spans[name].append((first, last, why))
+    for name, *span in listed_exclusions(unit, sources):
+        spans[name].append(tuple(span))
 
     def source_of(keys):
         f = keys.get("f", "")
         return next((name for name in sources if f.endswith(name)), None)
 
-    lines = collections.defaultdict(int)  # (source, line) -> hits over every build
+    # Each coverage point's hits over every run and build (Verilator merges
+    # some points across the builds of one model and keeps others apart by
+    # hierarchy: key them without it, "hit by any build").
+    line_points = collections.defaultdict(int)  # (source, line, kind, comment, column) -> hits
+    excluded_hits = collections.defaultdict(int)
     toggles = collections.defaultdict(int)
-    cover = collections.defaultdict(int)  # (hierarchy, file, line, column) -> hits
+    cover = {statement: 0 for statement in cover_statements(unit)}  # (bind file, line) -> hits
     for keys, count in points:
         kind = keys.get("page", "").split("/")[0]
         if kind == "v_user":
-            if "testbench/units/%s/" % unit not in keys.get("f", ""):
-                continue  # another unit's cover points
-            cover[(keys.get("h", ""), keys.get("f", ""), keys.get("l", ""), keys.get("n", ""))] += count
+            f = keys.get("f", "")
+            if "testbench/units/%s/" % unit in f:  # not another unit's, bound inside this one
+                key = (pathlib.Path(f).name, int(keys.get("l", 0)))
+                cover[key] = cover.get(key, 0) + count
             continue
         name = source_of(keys)
         if name is None:
             continue
         line = int(keys.get("l", 0))
-        if any(a <= line <= b for a, b, _ in spans[name]):
-            continue
         if kind in ("v_line", "v_branch"):
-            lines[(name, line)] += count
+            if any(a <= line <= b for a, b, *_ in spans[name]):
+                excluded_hits[(name, line)] += count
+            else:
+                line_points[(name, line, kind, keys.get("o", ""), keys.get("n", ""))] += count
         elif kind == "v_toggle":
             toggles[(keys.get("h", ""), keys.get("o", ""), line)] += count
-    reached = sum(1 for c in lines.values() if c)
+    # A line is reached when every point on it was (an if's taken and untaken
+    # branch carry the same line).
+    lines = collections.defaultdict(list)
+    for (name, line, *_), hits in line_points.items():
+        lines[(name, line)].append(hits)
+    reached = sum(1 for hits in lines.values() if all(hits))
     hit = sum(1 for c in cover.values() if c)
     pct = 100.0 * reached / len(lines) if lines else 0.0
     print("coverage: %s lines=%.1f%% points=%d/%d" % (unit, pct, hit, len(cover)))
@@ -127,16 +155,28 @@ def report(unit, points):
         print("  %s toggles=%.1f%% (%d of %d bits toggled both ways)"
               % (unit, 100.0 * sum(1 for c in toggles.values() if c) / len(toggles),
                  sum(1 for c in toggles.values() if c), len(toggles)))
+    ok = pct >= LINE_BAR and bool(cover) and hit == len(cover) and bool(lines)
     for name, s in spans.items():
-        for a, b, why in s:
-            print("  %s excluded: %s:%d-%d: %s" % (unit, name, a, b, why or "(no reason given)"))
-    ok = pct >= LINE_BAR and hit == len(cover) and bool(lines)
-    for (name, line), c in sorted(lines.items()):
+        for a, b, why, _ in s:
+            print("  %s excluded: %s:%d-%d: %s" % (unit, name, a, b, why or "NO REASON GIVEN (an exclusion needs one)"))
+            ok = ok and bool(why)
+    for (name, line), c in sorted(excluded_hits.items()):
         if not c:
-            print("  %s never reached: %s:%d" % (unit, name, line))
-    for (h, f, l, n), c in sorted(cover.items()):
+            continue
+        before_reset = next((note for a, b, _, note in spans[name] if a <= line <= b and note), "")
+        if before_reset:
+            print("  %s excluded, reached %d time(s) before reset: %s:%d: %s" % (unit, c, name, line, before_reset))
+        else:  # what was excluded as unreachable was reached: the exclusion is wrong
+            print("  %s excluded but reached %d time(s): %s:%d" % (unit, c, name, line))
+            ok = False
+    for (name, line), hits in sorted(lines.items()):
+        if not all(hits):
+            print("  %s never reached%s: %s:%d" % (unit, "" if not any(hits) else " (one of its branches)", name, line))
+    for (f, l), c in sorted(cover.items()):
         if not c:
-            print("  %s cover point never hit: %s:%s (%s)" % (unit, pathlib.Path(f).name, l, h))
+            print("  %s cover point never hit: %s:%d" % (unit, f, l))
+    if not cover:
+        print("  %s has no cover point (testbench/units/%s/*_cover.sv)" % (unit, unit))
     return ok
 
 

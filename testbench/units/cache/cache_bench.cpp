@@ -144,5 +144,5 @@ int main(int argc, char** argv) {
   // The configuration the second build's package was generated from (CMakeLists.txt).
   const Params eight = Params::with_overrides(nlohmann::json::parse(std::ifstream(kPages8Config)), kPages8Config);
   const Counts c8 = run(pages8, eight, a.ticks / 2, r, m);
-  return unit_bench::finish(ctx, a, m, "cache", "one 16 x 1 page: " + describe(ct) + "; eight 4 x 4: " + describe(c8));
+  return unit_bench::finish(ctx, a, m, "cache", std::to_string(a.ticks / 2) + " ticks a build; one 16 x 1 page: " + describe(ct) + "; eight 4 x 4: " + describe(c8));
 }

@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
   const Counts ct = run(thesis, 32, 69, a.ticks, r, m);
   const Counts cs = run(small, 5, 8, a.ticks, r, m);
   return unit_bench::finish(ctx, a, m, "fifo",
-                            "32 deep: " + std::to_string(ct.pushes) + " pushes, " + std::to_string(ct.full_ticks) +
+                            std::to_string(a.ticks) + " ticks a build; 32 deep: " + std::to_string(ct.pushes) + " pushes, " + std::to_string(ct.full_ticks) +
                                 " ticks full; 5 deep: " + std::to_string(cs.pushes) + " pushes, " +
                                 std::to_string(cs.full_ticks) + " ticks full");
 }

@@ -14,10 +14,9 @@
 #include <deque>
 #include <fstream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "Vhad.h"
 #include "Vhad_pages8.h"
@@ -76,6 +75,8 @@ class PixelSource {
   uint32_t zbase_ = 0;
 };
 
+// One configuration on a fresh instance of the unit (reset must set what
+// matters).
 template <typename Top>
 Counts run(Top& top, const Params& p, int frames, int pixels_per_frame, Random& r, Mismatches& m) {
   const girtd::RtlLayout l = girtd::rtl_layout(p);
@@ -121,8 +122,9 @@ Counts run(Top& top, const Params& p, int frames, int pixels_per_frame, Random& 
     const uint64_t frame_start = t;
     for (;; ++t) {
       if (t - frame_start > kFrameTicksAtMost) {  // a hang is a failure, not a wait
-        m.check(false, t, "frame " + std::to_string(frame) + " not done after " + std::to_string(kFrameTicksAtMost) +
-                              " ticks (HAD idle " + std::to_string(top.idle_o) + ", FIFO " + std::to_string(fifo.size()) + ")");
+        m.check(false, t,
+                "frame " + std::to_string(frame) + " not done after " + std::to_string(kFrameTicksAtMost) +
+                    " ticks (HAD idle " + std::to_string(top.idle_o) + ", FIFO " + std::to_string(fifo.size()) + ")");
         return c;
       }
       if (t % 61 == 0) p_push = r.chance(0.3) ? 0.05 : r.chance(0.5) ? 0.5 : 1.0;  // pauses and bursts
@@ -130,6 +132,12 @@ Counts run(Top& top, const Params& p, int frames, int pixels_per_frame, Random& 
       // This tick's inputs: the FIFO's head, the VRAM's signals.
       top.clk_i = 0;
       top.fifo_empty_i = fifo.empty();
+      // What the HAD must not use is noise: the FIFO's word while it is
+      // empty, the VRAM's data but on a fetch's last tick.
+      for (int i = 0; i < l.fifo.width; i += 32)
+        set_bits(&top.fifo_data_i[0], i, std::min(32, l.fifo.width - i), r.bits(32));
+      for (int i = 0; i < pixels * cw; i += 32)
+        set_bits(&top.vram_rdata_i[0], i, std::min(32, pixels * cw - i), r.bits(32));
       if (!fifo.empty()) {
         const girtd::Pixel& h = fifo.front();
         uint32_t* w = &top.fifo_data_i[0];
@@ -179,6 +187,7 @@ Counts run(Top& top, const Params& p, int frames, int pixels_per_frame, Random& 
       const uint64_t vram_quiet = port.quiet() || port.port_busy() || port.finishing() ? port.counting_ticks(1000) : 0;
       const uint64_t quiet = std::min<uint64_t>(top.quiet_o, vram_quiet);
       if (!push && !clear && !flush && quiet >= 1 && r.chance(0.3)) {
+        m.check(!req && !pop, t, "a request or a pop on a tick the HAD promised quiet");
         const uint64_t warp = 1 + r.below(quiet);
         top.ticks_i = uint32_t(warp);
         top.eval();
@@ -216,10 +225,12 @@ Counts run(Top& top, const Params& p, int frames, int pixels_per_frame, Random& 
     for (int y = 0; y < screen; ++y)
       for (int x = 0; x < screen; ++x) {
         const girtd::Rgb& rgb = fb.back_rgb(x, y);
-        const uint64_t want = (uint64_t((uint32_t(rgb.r) << 16) | (uint32_t(rgb.g) << 8) | rgb.b) << l.vram.z.width) | fb.z(x, y);
+        const uint64_t want =
+            (uint64_t((uint32_t(rgb.r) << 16) | (uint32_t(rgb.g) << 8) | rgb.b) << l.vram.z.width) | fb.z(x, y);
         wrong += vram.back_cell(l.page.vram_address(x, y)) != want;
       }
-    m.check(wrong == 0, t, "frame " + std::to_string(frame) + ": " + std::to_string(wrong) + " pixels differ from golden's");
+    m.check(wrong == 0, t,
+            "frame " + std::to_string(frame) + ": " + std::to_string(wrong) + " pixels differ from golden's");
     const girtd::HadCounts& g = golden.counts();
     m.check(top.written_o == g.written && top.blended_o == g.blended && top.z_rejected_o == g.z_rejected &&
                 top.dropped_o == g.dropped,
@@ -228,8 +239,9 @@ Counts run(Top& top, const Params& p, int frames, int pixels_per_frame, Random& 
             "page misses " + std::to_string(top.page_misses_o) + ", model " + std::to_string(model.page_misses()));
     m.check(top.busy_ticks_o == model.busy_ticks(), t,
             "busy ticks " + std::to_string(top.busy_ticks_o) + ", model " + std::to_string(model.busy_ticks()));
-    m.check(top.vram_wait_ticks_o == model.vram_wait_ticks(), t, "VRAM wait ticks " + std::to_string(top.vram_wait_ticks_o) +
-                                                                     ", model " + std::to_string(model.vram_wait_ticks()));
+    m.check(top.vram_wait_ticks_o == model.vram_wait_ticks(), t,
+            "VRAM wait ticks " + std::to_string(top.vram_wait_ticks_o) + ", model " +
+                std::to_string(model.vram_wait_ticks()));
     ++c.frames;
   }
   c.ticks = t;
@@ -243,8 +255,7 @@ int main(int argc, char** argv) {
   VerilatedContext ctx;
   ctx.randSeed(int(a.seed));
   ctx.randReset(2);
-  Vhad thesis{&ctx, "thesis"};
-  Vhad_pages8 pages8{&ctx, "pages8"};
+  unit_bench::Instances instances;
   Random r(a.seed);
   Mismatches m("had");
   using nlohmann::json;
@@ -256,15 +267,20 @@ int main(int argc, char** argv) {
   const int per_frame = int(std::max<uint64_t>(200, a.ticks / 10 / 3 / 8));
   std::string summary;
   auto tell = [&](const char* name, const Counts& c) {
-    summary += std::string(summary.empty() ? "" : "; ") + name + " " + std::to_string(c.pixels) + " pixels";
+    summary += std::string(summary.empty() ? "" : "; ") + name + " " + std::to_string(c.frames) + " frames, " +
+               std::to_string(c.pixels) + " pixels, " + std::to_string(c.ticks) + " ticks";
   };
-  tell("thesis", run(thesis, Params::defaults(), 3, per_frame, r, m));
-  tell("options", run(thesis, Params::with_overrides(options, "had bench"), 3, per_frame, r, m));
-  tell("steals", run(thesis, Params::with_overrides(steals, "had bench"), 3, per_frame, r, m));
-  tell("fast", run(thesis, Params::with_overrides(fast, "had bench"), 3, per_frame, r, m));
+  tell("thesis", run(instances.fresh<Vhad>(ctx, "thesis"), Params::defaults(), 3, per_frame, r, m));
+  tell("options",
+       run(instances.fresh<Vhad>(ctx, "options"), Params::with_overrides(options, "had bench"), 3, per_frame, r, m));
+  tell("steals",
+       run(instances.fresh<Vhad>(ctx, "steals"), Params::with_overrides(steals, "had bench"), 3, per_frame, r, m));
+  tell("fast", run(instances.fresh<Vhad>(ctx, "fast"), Params::with_overrides(fast, "had bench"), 3, per_frame, r, m));
   json eight = json::parse(std::ifstream(kPages8Config));
-  tell("pages8", run(pages8, Params::with_overrides(eight, kPages8Config), 3, per_frame, r, m));
+  tell("pages8", run(instances.fresh<Vhad_pages8>(ctx, "pages8"), Params::with_overrides(eight, kPages8Config), 3,
+                     per_frame, r, m));
   eight.merge_patch(options);
-  tell("pages8+options", run(pages8, Params::with_overrides(eight, kPages8Config), 3, per_frame, r, m));
+  tell("pages8+options", run(instances.fresh<Vhad_pages8>(ctx, "pages8_options"),
+                             Params::with_overrides(eight, kPages8Config), 3, per_frame, r, m));
   return unit_bench::finish(ctx, a, m, "had", summary);
 }
