@@ -40,7 +40,22 @@ function(girtd_add_rtl_model target sim_target hw_generated)
   # The trace functions Verilator generates for the traced model load 64-bit
   # values from its 32-bit-aligned trace buffer, and fstapi.c shifts negative
   # values left: both are exempted from "alignment" and "shift" there too.
-  if(GIRTD_SANITIZE)
+  # The sanitize sub-build (cmake/SanitizeSubBuild.cmake) sets
+  # GIRTD_SANITIZE_VERILATED off: there the C++ that Verilator generates from
+  # hw/, and Verilator's runtime, are compiled without the sanitizers and
+  # without debug information: a sanitizer there would check Verilator's code
+  # generator, not ours. The code of ours around them (models/, sim/, the
+  # RTL's wrappers here) stays sanitized, and the RTL is checked otherwise
+  # (assertions, X randomization, formal proofs, unit benches).
+  if(GIRTD_SANITIZE AND NOT GIRTD_SANITIZE_VERILATED)
+    get_target_property(_rtl_sources ${target} SOURCES)
+    list(REMOVE_DUPLICATES _rtl_sources)  # each Verilated model lists the runtime's sources
+    foreach(_source ${_rtl_sources})
+      if(_source MATCHES "/V(dda|girtd_backend)[^/]*\\.cpp$" OR _source MATCHES "^${VERILATOR_ROOT}/include/")
+        set_property(SOURCE ${_source} APPEND PROPERTY COMPILE_OPTIONS -fno-sanitize=all -g0)
+      endif()
+    endforeach()
+  elseif(GIRTD_SANITIZE)
     set_source_files_properties(${VERILATOR_ROOT}/include/verilated_fst_c.cpp PROPERTIES
                                 COMPILE_OPTIONS "-fno-sanitize=null;-fno-sanitize=alignment;-fno-sanitize=shift")
     get_target_property(_rtl_sources ${target} SOURCES)
