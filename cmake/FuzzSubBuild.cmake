@@ -25,7 +25,8 @@ ExternalProject_Add(girtd_fuzz
 # leak or a sanitizer report fails the test. The fixture builds the targets
 # first, so a plain ctest never replays a missing or stale binary.
 add_test(NAME "fuzz: build the targets" COMMAND ${CMAKE_COMMAND} --build ${CMAKE_BINARY_DIR} --target girtd_fuzz)
-set_tests_properties("fuzz: build the targets" PROPERTIES FIXTURES_SETUP fuzz_targets LABELS fuzz)
+# One ninja at a time in build/: the sanitize sub-build's fixture takes the same lock.
+set_tests_properties("fuzz: build the targets" PROPERTIES FIXTURES_SETUP fuzz_targets LABELS fuzz RESOURCE_LOCK build_folder)
 set(_seeds_trace ${CMAKE_SOURCE_DIR}/traces)
 set(_seeds_scene ${CMAKE_SOURCE_DIR}/traces/scenes)
 set(_seeds_config ${CMAKE_SOURCE_DIR}/config)

@@ -186,8 +186,8 @@ Counts run(Top& top, const Params& p, int frames, int pixels_per_frame, Random& 
       const girtd::VramPortTicks& port = vram.port();
       const uint64_t vram_quiet = port.quiet() || port.port_busy() || port.finishing() ? port.counting_ticks(1000) : 0;
       const uint64_t quiet = std::min<uint64_t>(top.quiet_o, vram_quiet);
+      m.check(!(quiet >= 1 && (req || pop)), t, "a request or a pop on a tick the HAD promised quiet");
       if (!push && !clear && !flush && quiet >= 1 && r.chance(0.3)) {
-        m.check(!req && !pop, t, "a request or a pop on a tick the HAD promised quiet");
         const uint64_t warp = 1 + r.below(quiet);
         top.ticks_i = uint32_t(warp);
         top.eval();
