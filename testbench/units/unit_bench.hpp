@@ -54,6 +54,13 @@ class Random {
   std::mt19937_64 gen_;
 };
 
+// Every bench's Verilator context: its random values drawn from the seed,
+// and registers and memories that start random (reset must set what matters).
+inline void seed(VerilatedContext& ctx, const Args& a) {
+  ctx.randSeed(int(a.seed));
+  ctx.randReset(2);
+}
+
 // Bits [lsb, lsb + width) of a wide Verilated port (width <= 64).
 inline uint64_t get_bits(const uint32_t* words, int lsb, int width) {
   uint64_t v = 0;

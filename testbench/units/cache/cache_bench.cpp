@@ -134,8 +134,7 @@ std::string describe(const Counts& c) {
 int main(int argc, char** argv) {
   const unit_bench::Args a = unit_bench::parse_args(argc, argv);
   VerilatedContext ctx;
-  ctx.randSeed(int(a.seed));
-  ctx.randReset(2);
+  unit_bench::seed(ctx, a);
   Vpixel_cache thesis{&ctx, "thesis"};
   Vpixel_cache_pages8 pages8{&ctx, "pages8"};
   Random r(a.seed);

@@ -89,8 +89,7 @@ Counts run(Top& top, int depth, int width, uint64_t ticks, Random& r, Mismatches
 int main(int argc, char** argv) {
   const unit_bench::Args a = unit_bench::parse_args(argc, argv);
   VerilatedContext ctx;
-  ctx.randSeed(int(a.seed));
-  ctx.randReset(2);  // registers start random: reset must set what matters
+  unit_bench::seed(ctx, a);
   Vpixel_fifo thesis{&ctx, "thesis"};
   Vpixel_fifo_small small{&ctx, "small"};
   Random r(a.seed);

@@ -253,8 +253,7 @@ Counts run(Top& top, const Params& p, int frames, int pixels_per_frame, Random& 
 int main(int argc, char** argv) {
   const unit_bench::Args a = unit_bench::parse_args(argc, argv);
   VerilatedContext ctx;
-  ctx.randSeed(int(a.seed));
-  ctx.randReset(2);
+  unit_bench::seed(ctx, a);
   unit_bench::Instances instances;
   Random r(a.seed);
   Mismatches m("had");

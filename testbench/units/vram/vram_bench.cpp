@@ -126,8 +126,7 @@ Counts run(Vvram& top, const Params& p, uint64_t ticks, Random& r, Mismatches& m
 int main(int argc, char** argv) {
   const unit_bench::Args a = unit_bench::parse_args(argc, argv);
   VerilatedContext ctx;
-  ctx.randSeed(int(a.seed));
-  ctx.randReset(2);
+  unit_bench::seed(ctx, a);
   unit_bench::Instances instances;
   Random r(a.seed);
   Mismatches m("vram");
