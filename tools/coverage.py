@@ -96,20 +96,14 @@ def listed_exclusions(unit, sources):
     return out
 
 
-def cover_statements(unit):
-    """(bind file name, line) of every `cover property` in testbench/units/UNIT/*_cover.sv."""
+def bind_statements(unit, keyword):
+    """(bind file name, line) of every `KEYWORD property` (cover, assert) in testbench/units/UNIT/*_cover.sv."""
     out = set()
     for path in sorted((UNITS / unit).glob("*_cover.sv")):
         for n, text in enumerate(path.read_text().splitlines(), 1):
-            if re.match(r"\s*cover property", text):
+            if re.match(r"\s*%s property" % keyword, text):
                 out.add((path.name, n))
     return out
-
-
-def asserts(unit):
-    """Whether a bind file of the unit asserts something (what a before_reset exclusion rests on)."""
-    return any(re.match(r"\s*assert property", text)
-               for path in (UNITS / unit).glob("*_cover.sv") for text in path.read_text().splitlines())
 
 
 def report(unit, points):
@@ -128,7 +122,7 @@ def report(unit, points):
     line_points = collections.defaultdict(int)  # (source, line, kind, comment, column) -> hits
     excluded_hits = collections.defaultdict(int)
     toggles = collections.defaultdict(int)
-    cover = {statement: 0 for statement in cover_statements(unit)}  # (bind file, line) -> hits
+    cover = {statement: 0 for statement in bind_statements(unit, "cover")}  # (bind file, line) -> hits
     for keys, count in points:
         kind = keys.get("page", "").split("/")[0]
         if kind == "v_user":
@@ -170,7 +164,7 @@ def report(unit, points):
         if not c:
             continue
         before_reset = next((note for a, b, _, note in spans[name] if a <= line <= b and note), "")
-        if before_reset and not asserts(unit):
+        if before_reset and not bind_statements(unit, "assert"):  # what such an exclusion rests on
             print("  %s excluded but reached %d time(s): %s:%d (the entry says before reset, but no bind file of "
                   "the unit asserts what holds after)" % (unit, c, name, line))
             ok = False

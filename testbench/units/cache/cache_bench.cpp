@@ -8,9 +8,8 @@
 // is never used). Two builds: the thesis' one 16 x 1 page, and eight 4 x 4
 // pages (testbench/variants/pages8_4x4.json).
 #include <fstream>
-#include <vector>
-
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "Vpixel_cache.h"
 #include "Vpixel_cache_pages8.h"
@@ -38,7 +37,8 @@ Counts run(Top& top, const Params& p, uint64_t ticks, Random& r, Mismatches& m) 
   const int pixels = l.page.pixels, cw = l.vram.cell_bits, slots = l.cache.pages;
   const uint32_t pages = 1u << l.page.number_bits;
   girtd::CacheTags tags(l.cache, /*dirty_bits=*/true);  // the RTL keeps dirty bits; the option is the HAD's
-  std::vector<std::vector<uint64_t>> cells(static_cast<size_t>(slots), std::vector<uint64_t>(static_cast<size_t>(pixels)));
+  std::vector<std::vector<uint64_t>> cells(static_cast<size_t>(slots),
+                                           std::vector<uint64_t>(static_cast<size_t>(pixels)));
   std::vector<uint32_t> held(static_cast<size_t>(slots), 0);  // the page each valid slot holds
   // Pages that collide: several per slot, and a few far ones.
   std::vector<uint32_t> hot;
@@ -95,8 +95,8 @@ Counts run(Top& top, const Params& p, uint64_t ticks, Random& r, Mismatches& m) 
     // the pixel, or invalidate the flush slot (never two on one slot).
     const bool load = !hit && r.chance(0.3);
     const bool write = !load && have_pixel && r.chance(0.5);
-    const bool invalidate = r.chance(0.02) && !(load && tags.slot_of(head) == flush_slot) &&
-                            !(write && pix_slot == flush_slot);
+    const bool invalidate =
+        r.chance(0.02) && !(load && tags.slot_of(head) == flush_slot) && !(write && pix_slot == flush_slot);
     std::vector<uint64_t> data(static_cast<size_t>(pixels));
     for (auto& d : data) d = r.bits(cw);
     const uint64_t write_data = r.bits(cw);
@@ -143,5 +143,7 @@ int main(int argc, char** argv) {
   // The configuration the second build's package was generated from (CMakeLists.txt).
   const Params eight = Params::with_overrides(nlohmann::json::parse(std::ifstream(kPages8Config)), kPages8Config);
   const Counts c8 = run(pages8, eight, a.ticks / 2, r, m);
-  return unit_bench::finish(ctx, a, m, "cache", std::to_string(a.ticks / 2) + " ticks a build; one 16 x 1 page: " + describe(ct) + "; eight 4 x 4: " + describe(c8));
+  return unit_bench::finish(ctx, a, m, "cache",
+                            std::to_string(a.ticks / 2) + " ticks a build; one 16 x 1 page: " + describe(ct) +
+                                "; eight 4 x 4: " + describe(c8));
 }

@@ -64,7 +64,8 @@ Counts run(Top& top, int depth, int width, uint64_t ticks, Random& r, Mismatches
     top.push_i = top.pop_i = 0;
     top.eval();
     const bool empty = model.empty(), full = int(model.size()) >= limit;
-    m.check(top.count_o == model.size(), t, "count " + std::to_string(top.count_o) + ", model " + std::to_string(model.size()));
+    m.check(top.count_o == model.size(), t,
+            "count " + std::to_string(top.count_o) + ", model " + std::to_string(model.size()));
     m.check(bool(top.empty_o) == empty, t, "empty");
     m.check(bool(top.full_o) == full, t, "full");
     if (!empty) m.check(get(top.data_o) == model.front(), t, "head data differs from the model's");
@@ -97,7 +98,8 @@ int main(int argc, char** argv) {
   const Counts ct = run(thesis, 32, 69, a.ticks, r, m);
   const Counts cs = run(small, 5, 8, a.ticks, r, m);
   return unit_bench::finish(ctx, a, m, "fifo",
-                            std::to_string(a.ticks) + " ticks a build; 32 deep: " + std::to_string(ct.pushes) + " pushes, " + std::to_string(ct.full_ticks) +
+                            std::to_string(a.ticks) + " ticks a build; 32 deep: " + std::to_string(ct.pushes) +
+                                " pushes, " + std::to_string(ct.full_ticks) +
                                 " ticks full; 5 deep: " + std::to_string(cs.pushes) + " pushes, " +
                                 std::to_string(cs.full_ticks) + " ticks full");
 }

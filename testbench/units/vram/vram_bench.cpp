@@ -133,19 +133,23 @@ int main(int argc, char** argv) {
   // Cycles of 15 ns (3 base ticks): a clear of 4 transfers and a cycle stolen
   // every 40 ticks; a clear of 500 transfers (2,000 ticks) and a cycle
   // stolen every 6, so that the steals owed during a clear saturate.
-  const Params timings[] = {
-      Params::defaults(),
-      Params::with_overrides(
-          {{"vram", {{"cycle_ns", 15.0}, {"serial_ns", 5.0}, {"serial_transfers", 4}, {"steal_every_ns", 200.0}}}},
-          "vram bench"),
-      Params::with_overrides(
-          {{"vram", {{"cycle_ns", 15.0}, {"serial_ns", 5.0}, {"serial_transfers", 500}, {"steal_every_ns", 30.0}}}},
-          "vram bench"),
+  const struct {
+    const char* name;
+    Params params;
+  } timings[] = {
+      {"thesis", Params::defaults()},
+      {"steals",
+       Params::with_overrides(
+           {{"vram", {{"cycle_ns", 15.0}, {"serial_ns", 5.0}, {"serial_transfers", 4}, {"steal_every_ns", 200.0}}}},
+           "vram bench")},
+      {"saturating",
+       Params::with_overrides(
+           {{"vram", {{"cycle_ns", 15.0}, {"serial_ns", 5.0}, {"serial_transfers", 500}, {"steal_every_ns", 30.0}}}},
+           "vram bench")},
   };
   std::string summary = std::to_string(a.ticks / 3) + " ticks a timing";
-  const char* names[] = {"thesis", "steals", "saturating"};
-  for (int i = 0; i < 3; ++i) {
-    const Counts c = run(instances.fresh<Vvram>(ctx, names[i]), timings[i], a.ticks / 3, r, m);
+  for (const auto& timing : timings) {
+    const Counts c = run(instances.fresh<Vvram>(ctx, timing.name), timing.params, a.ticks / 3, r, m);
     summary += "; " + std::to_string(c.reads) + " fetches, " + std::to_string(c.writes) + " writes, " +
                std::to_string(c.clears) + " clears, " + std::to_string(c.warped) + " warps";
   }
