@@ -26,6 +26,10 @@ SIMULATOR = ["sim", "models", "hw", "config", "traces", "studies", "cmake", "CMa
 MEASURES = {"report_page": ["sim/report"], "formal": ["hw", "config", "models/layout", "tools/formal.py"]}
 # What a result does not depend on in the folders it measures: their documents.
 NOT_SOURCES = ":(exclude,glob)**/*.md"
+# What no simulation runs in the folders a simulator's result measures: the
+# formal properties (only tools/girtd formal reads them) and this bookkeeping.
+NOT_SIMULATED = [":(exclude,glob)hw/**/*_formal.sv", ":(exclude,glob)hw/**/*_formal.svh", ":(exclude)hw/formal.json",
+                 ":(exclude)studies/recorded.py"]
 # Not results: this folder's own documents.
 NOT_RESULTS = {"README.md", "recorded.json"}
 
@@ -43,11 +47,16 @@ def measures(path):
     return MEASURES.get(path.split("/")[0], SIMULATOR)
 
 
+def not_sources(measured):
+    """The pathspecs left out of MEASURED's folders."""
+    return [NOT_SOURCES] + (NOT_SIMULATED if list(measured) == SIMULATOR else [])
+
+
 def stamp(path, command):
     path = str(pathlib.Path(path).resolve().relative_to(RESULTS.resolve()))
     manifest = load()
     sources = measures(path)
-    dirty = bool(git("status", "--porcelain", "--", *sources, NOT_SOURCES))
+    dirty = bool(git("status", "--porcelain", "--", *sources, *not_sources(sources)))
     manifest[path] = {"commit": git("rev-parse", "HEAD"), "uncommitted_changes": dirty,
                       "date": datetime.date.today().isoformat(), "command": command, "measures": sources}
     MANIFEST.write_text(json.dumps(dict(sorted(manifest.items())), indent=2) + "\n")
@@ -88,7 +97,7 @@ def check():
         if not entry:
             stale.append("results/%s: no commit recorded (record it again: tools/girtd docs --record)" % path)
             continue
-        sources = list(entry["measures"]) + [NOT_SOURCES]
+        sources = list(entry["measures"]) + not_sources(entry["measures"])
         later = git("rev-list", "--count", entry["commit"] + "..HEAD", "--", *sources)
         if int(later) or entry["uncommitted_changes"]:
             last = git("log", "-1", "--format=%h %cs", "--", *sources)

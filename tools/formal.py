@@ -13,8 +13,11 @@ girtd_pkg.sv with some items overridden) and the method:
 - "pdr": ABC's property-directed reachability (IC3) on the bit-level model
   (AIGER): an unbounded proof that finds its own invariants.
 The properties are the labelled immediate asserts of hw/UNIT/TOP_formal.svh,
-which the unit includes under `ifdef FORMAL`; the comment after each is its
-row in the table. Each seeded bug is a one-line change to a unit; it is
+which the unit includes under `ifdef FORMAL_TOP, or of hw/UNIT/TOP_formal.sv,
+a wrapper module TOP_formal, where they read only TOP's ports; the comment
+after each is its row in the table. A pdr check may name wires to "cut":
+each is then driven by a free input instead of its logic, so what is proven
+holds whatever those wires carry. Each seeded bug is a one-line change to a unit; it is
 caught when some property of that unit then fails.
 
 Prints a markdown table (property, unit, instance, method, result, time)
@@ -45,10 +48,21 @@ class SpecError(Exception):
     pass
 
 
+def formal_file(unit, top):
+    """hw/UNIT/TOP_formal.svh (included into TOP), else hw/UNIT/TOP_formal.sv (a wrapper module, TOP_formal)."""
+    included = ROOT / "hw" / unit / f"{top}_formal.svh"
+    return included if included.exists() else ROOT / "hw" / unit / f"{top}_formal.sv"
+
+
+def proven_top(job):
+    """The module yosys elaborates: TOP itself, or its wrapper when the properties read only TOP's ports."""
+    return job["top"] + ("_formal" if formal_file(job["unit"], job["top"]).suffix == ".sv" else "")
+
+
 def properties(unit, top, defines=()):
     """[(label, description)] of hw/UNIT/TOP_formal.svh: each labelled assert and the comment ending it,
     leaving out those inside an `ifdef NAME block whose NAME is not in DEFINES."""
-    path = ROOT / "hw" / unit / f"{top}_formal.svh"
+    path = formal_file(unit, top)
     text = path.read_text()
     found = []
     for m in LABEL.finditer(text):
@@ -108,14 +122,15 @@ def package(generated, overrides, name):
 
 
 def yosys_read(job):
-    top, src_dir = job["top"], job["src_dir"]
+    top, src_dir, prep = job["top"], job["src_dir"], proven_top(job)
     chparam = " ".join(f"-set {k} {v}" for k, v in job["parameters"].items())
     also = " ".join(str(ROOT / f) for f in job["also"])
+    wrapper = f" {src_dir}/{prep}.sv" if prep != top else ""
     defines = " ".join(f"-D{d}" for d in [f"FORMAL_{top.upper()}"] + job["defines"])
-    return (f"read_verilog -sv -formal -DSYNTHESIS {defines} -I{src_dir} {job['pkg_file']} {also} "
-            f"{src_dir}/{top}.sv\n"
-            + (f"chparam {chparam} {top}\n" if chparam else "")
-            + f"prep -top {top}\n")
+    return (f"read_verilog -sv -formal -DSYNTHESIS {defines} -I{src_dir} -I{job['generated']} {job['pkg_file']} {also} "
+            f"{src_dir}/{top}.sv{wrapper}\n"
+            + (f"chparam {chparam} {prep}\n" if chparam else "")
+            + f"prep -top {prep}\n")
 
 
 def run(argv, cwd, log):
@@ -166,9 +181,11 @@ def prove_pdr(job, work, label):
     """LABEL (or, given None, every property at once) with ABC's pdr on the AIGER model."""
     script = yosys_read(job)
     script += "select -assert-count %d t:$assert\n" % len(job["labels"])
+    if job["cut"]:  # named wires driven by a free input instead (hw/formal.json "cut")
+        script += "flatten\ncutpoint " + " ".join(f"w:{w}" for w in job["cut"]) + "\n"
     if label:  # this one must be there (a missing one would leave nothing to prove)
-        script += f"select -assert-count 1 t:$assert {job['top']}/{label} %i\n"
-        script += f"chformal -assert -remove t:$assert {job['top']}/{label} %d\n"
+        script += f"select -assert-count 1 t:$assert {proven_top(job)}/{label} %i\n"
+        script += f"chformal -assert -remove t:$assert {proven_top(job)}/{label} %d\n"
     script += ("memory_map\nopt\nasync2sync\nflatten\nsetundef -undriven -anyseq\ndelete -output\n"
                "techmap\nopt -fast\ndffunmap\nabc -g AND\nopt_clean\nwrite_aiger -zinit model.aig\n")
     (work / "model.ys").write_text(script)
@@ -227,23 +244,29 @@ def sources(unit, bug, work):
     return copy
 
 
-def job(c, depth, pkg_files, src_dir):
+def job(c, depth, pkg_files, src_dir, generated):
     """What every run of check C (at built DEPTH, from the sources in SRC_DIR) needs."""
     labels = properties(c["unit"], c["top"], c.get("defines", []))
     prove = [(l, t) for l, t in labels if l in c.get("properties", [l])]
     if len(prove) != len(c.get("properties", prove)):
         raise SpecError(f"hw/formal.json: a check of {c['unit']} names properties its file does not have")
+    if c.get("cut") and c["method"] != "pdr":
+        raise SpecError(f"hw/formal.json: a check of {c['unit']} cuts wires: only a pdr check can")
     check_instance = c["instance"] + (f", {c['note']}" if "note" in c else "")
     return dict(unit=c["unit"], top=c["top"], check_instance=check_instance, depth=depth,
                 instance=check_instance + (f", DEPTH {depth}" if depth else ""),
                 method=c["method"], k=c.get("k"), bmc=max(c.get("bmc", 0), c.get("k", 0)),
                 smt_arrays=c.get("smt_arrays", False), also=c.get("also", []), defines=c.get("defines", []),
+                cut=c.get("cut", []),
                 parameters=dict(c.get("parameters", {}), **({"DEPTH": depth} if depth else {})),
-                pkg_file=pkg_files[c["instance"]], src_dir=str(src_dir), labels=labels, prove=prove)
+                pkg_file=pkg_files[c["instance"]], src_dir=str(src_dir), generated=str(generated), labels=labels,
+                prove=prove)
 
 
-def plan(spec, generated, scratch, units):
-    """The proof jobs and the seeded-bug jobs (one each)."""
+def plan(spec, generated_pkg, scratch, units):
+    """The proof jobs and the seeded-bug jobs (one each). GENERATED_PKG: the build's girtd_pkg.sv, whose
+    folder also holds the generated tables the RTL includes (the DDA's PROM)."""
+    generated, include_dir = generated_pkg.read_text(), generated_pkg.resolve().parent
     pkg_files = {}
     for name, overrides in spec["instances"].items():
         f = scratch / f"pkg_{name}.sv"
@@ -254,7 +277,7 @@ def plan(spec, generated, scratch, units):
         if units and c["unit"] not in units:
             continue
         for depth in c.get("depths", [None]):
-            base = job(c, depth, pkg_files, ROOT / "hw" / c["unit"])
+            base = job(c, depth, pkg_files, ROOT / "hw" / c["unit"], include_dir)
             tag = re.sub(r"\W+", "_", f"check{index}_{c['unit']}_{depth or ''}")
             if c["method"] == "induction":
                 proofs.append(dict(base, work=str(scratch / tag)))
@@ -271,7 +294,7 @@ def plan(spec, generated, scratch, units):
         if c is None:
             raise SpecError(f"hw/formal.json: seeded bug '{bug['bug']}': no check of {bug['unit']} to run it with")
         work = scratch / f"bug{i}"
-        bugs.append(dict(job(c, c.get("depths", [None])[0], pkg_files, sources(c["unit"], bug, work)),
+        bugs.append(dict(job(c, c.get("depths", [None])[0], pkg_files, sources(c["unit"], bug, work), include_dir),
                          bug=bug["bug"], work=str(work / "run")))
     return proofs, bugs
 
@@ -372,7 +395,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="girtd_formal_") as tmp:
         scratch = keep or pathlib.Path(tmp)
         try:
-            proofs, bugs = plan(spec, generated_pkg.read_text(), scratch, set(args.unit))
+            proofs, bugs = plan(spec, generated_pkg, scratch, set(args.unit))
         except SpecError as e:
             print(f"formal.py: {e}", file=sys.stderr)
             return 2
