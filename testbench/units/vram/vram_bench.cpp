@@ -9,6 +9,7 @@
 // done, front and the quiet ticks against the model; every fetch's data
 // against the array, which applies a write ending on the tick a fetch is
 // taken first, as the RTL does.
+#include <iterator>
 #include <vector>
 
 #include "Vvram.h"
@@ -147,9 +148,10 @@ int main(int argc, char** argv) {
            {{"vram", {{"cycle_ns", 15.0}, {"serial_ns", 5.0}, {"serial_transfers", 500}, {"steal_every_ns", 30.0}}}},
            "vram bench")},
   };
-  std::string summary = std::to_string(a.ticks / 3) + " ticks a timing";
+  const uint64_t per_timing = a.ticks / std::size(timings);
+  std::string summary = std::to_string(per_timing) + " ticks a timing";
   for (const auto& timing : timings) {
-    const Counts c = run(instances.fresh<Vvram>(ctx, timing.name), timing.params, a.ticks / 3, r, m);
+    const Counts c = run(instances.fresh<Vvram>(ctx, timing.name), timing.params, per_timing, r, m);
     summary += "; " + std::to_string(c.reads) + " fetches, " + std::to_string(c.writes) + " writes, " +
                std::to_string(c.clears) + " clears, " + std::to_string(c.warped) + " warps";
   }
