@@ -23,7 +23,8 @@ MANIFEST = RESULTS / "recorded.json"
 # What a recorded result depends on: the simulator, its design values and the
 # inputs it ran (a result of the report page only the page's code).
 SIMULATOR = ["sim", "models", "hw", "config", "traces", "studies", "cmake", "CMakeLists.txt"]
-MEASURES = {"report_page": ["sim/report"], "formal": ["hw", "config", "models/layout", "tools/formal.py"]}
+MEASURES = {"report_page": ["sim/report"],
+            "formal": ["hw", "config", "models/layout", "models/dda", "tools/formal.py"]}  # models/dda: the state codes
 # What a result does not depend on in the folders it measures: their documents.
 NOT_SOURCES = ":(exclude,glob)**/*.md"
 # What no simulation runs in the folders a simulator's result measures: the

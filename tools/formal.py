@@ -182,7 +182,8 @@ def prove_pdr(job, work, label):
     script = yosys_read(job)
     script += "select -assert-count %d t:$assert\n" % len(job["labels"])
     if job["cut"]:  # named wires driven by a free input instead (hw/formal.json "cut")
-        script += "flatten\ncutpoint " + " ".join(f"w:{w}" for w in job["cut"]) + "\n"
+        script += "flatten\n" + "".join(f"select -assert-min 1 w:{w}\n" for w in job["cut"])  # a renamed wire fails
+        script += "cutpoint " + " ".join(f"w:{w}" for w in job["cut"]) + "\n"
     if label:  # this one must be there (a missing one would leave nothing to prove)
         script += f"select -assert-count 1 t:$assert {proven_top(job)}/{label} %i\n"
         script += f"chformal -assert -remove t:$assert {proven_top(job)}/{label} %d\n"

@@ -33,13 +33,14 @@ module dda_formal #(
 );
   localparam int XY_W = girtd_pkg::XY_W;
   localparam int SB = girtd_pkg::SCREEN_BITS;
-  localparam int W = 1 << SB;  // the window's side
-  // Acting DDA clocks from the last offer to idle, for any triangle in the
-  // window: F_ROW per row (a start check; a walk, a run and a restore, or a
-  // run right, a restore and a run left; a wait after each compare that
-  // needs one; the Y step), W rows, the last check, and the output registers.
-  // An upper bound argued by hand, not the least one: the proof confirms it.
-  localparam int F_ROW = 2 * W + 5;
+  localparam int W = 1 << SB;  // the screen's side
+  // Acting DDA clocks from the last offer to idle, for any triangle on the
+  // screen: F_ROW per row (a start check; then a walk and a run one way, or a
+  // run right and a run left from the same start: at most W pixels either
+  // way; a restore, a wait after each compare that needs one, the Y step),
+  // W rows, the last check, and the output registers. Argued by hand; the
+  // proof confirms it.
+  localparam int F_ROW = W + 4;
   localparam int F_IDLE_BOUND = W * F_ROW + 1 + girtd_pkg::OUT_LATENCY;
 
   logic out_valid, in_ready, active, stall, still;
@@ -81,10 +82,13 @@ module dda_formal #(
                             xmin_i <= x0_i && x0_i <= xmax_i && y0_i <= ymax_i);
   end
 
-  // Acting clocks since the last offer (saturating).
-  logic [9:0] f_quiet_q;
+  // Acting clocks since the last offer, saturating one past the bound (wide
+  // enough at any screen size, so that the bound is always reached).
+  localparam int F_QUIET_W = $clog2(F_IDLE_BOUND + 2);
+  logic [F_QUIET_W-1:0] f_quiet_q;
   always_ff @(posedge clk_i)
-    f_quiet_q <= !rst_ni || in_valid_i ? '0 : f_quiet_q + 10'(en_i && !(out_valid && !out_ready_i) && f_quiet_q != '1);
+    f_quiet_q <= !rst_ni || in_valid_i ? '0
+                 : f_quiet_q + F_QUIET_W'(en_i && !(out_valid && !out_ready_i) && f_quiet_q != '1);
 
   always_comb if (f_past_q && rst_ni) begin
     dda_legal_state: assert (state <= girtd_pkg::S_IDLE);  // the sequencer is only ever in one of its nine states
