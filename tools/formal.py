@@ -17,7 +17,8 @@ which the unit includes under `ifdef FORMAL_TOP, or of hw/UNIT/TOP_formal.sv,
 a wrapper module TOP_formal, where they read only TOP's ports; the comment
 after each is its row in the table. A pdr check may name wires to "cut":
 each is then driven by a free input instead of its logic, so what is proven
-holds whatever those wires carry. Each seeded bug is a one-line change to a unit; it is
+holds whatever those wires carry. An instance may start "like" another and
+override more items. Each seeded bug is a one-line change to a unit; it is
 caught when some property of that unit then fails.
 
 Prints a markdown table (property, unit, instance, method, result, time)
@@ -54,15 +55,9 @@ def formal_file(unit, top):
     return included if included.exists() else ROOT / "hw" / unit / f"{top}_formal.sv"
 
 
-def proven_top(job):
-    """The module yosys elaborates: TOP itself, or its wrapper when the properties read only TOP's ports."""
-    return job["top"] + ("_formal" if formal_file(job["unit"], job["top"]).suffix == ".sv" else "")
-
-
-def properties(unit, top, defines=()):
-    """[(label, description)] of hw/UNIT/TOP_formal.svh: each labelled assert and the comment ending it,
+def properties(path, defines=()):
+    """[(label, description)] of PATH (formal_file): each labelled assert and the comment ending it,
     leaving out those inside an `ifdef NAME block whose NAME is not in DEFINES."""
-    path = formal_file(unit, top)
     text = path.read_text()
     found = []
     for m in LABEL.finditer(text):
@@ -122,7 +117,7 @@ def package(generated, overrides, name):
 
 
 def yosys_read(job):
-    top, src_dir, prep = job["top"], job["src_dir"], proven_top(job)
+    top, src_dir, prep = job["top"], job["src_dir"], job["proven_top"]
     chparam = " ".join(f"-set {k} {v}" for k, v in job["parameters"].items())
     also = " ".join(str(ROOT / f) for f in job["also"])
     wrapper = f" {src_dir}/{prep}.sv" if prep != top else ""
@@ -185,8 +180,8 @@ def prove_pdr(job, work, label):
         script += "flatten\n" + "".join(f"select -assert-min 1 w:{w}\n" for w in job["cut"])  # a renamed wire fails
         script += "cutpoint " + " ".join(f"w:{w}" for w in job["cut"]) + "\n"
     if label:  # this one must be there (a missing one would leave nothing to prove)
-        script += f"select -assert-count 1 t:$assert {proven_top(job)}/{label} %i\n"
-        script += f"chformal -assert -remove t:$assert {proven_top(job)}/{label} %d\n"
+        script += f"select -assert-count 1 t:$assert {job['proven_top']}/{label} %i\n"
+        script += f"chformal -assert -remove t:$assert {job['proven_top']}/{label} %d\n"
     script += ("memory_map\nopt\nasync2sync\nflatten\nsetundef -undriven -anyseq\ndelete -output\n"
                "techmap\nopt -fast\ndffunmap\nabc -g AND\nopt_clean\nwrite_aiger -zinit model.aig\n")
     (work / "model.ys").write_text(script)
@@ -247,14 +242,17 @@ def sources(unit, bug, work):
 
 def job(c, depth, pkg_files, src_dir, generated):
     """What every run of check C (at built DEPTH, from the sources in SRC_DIR) needs."""
-    labels = properties(c["unit"], c["top"], c.get("defines", []))
+    path = formal_file(c["unit"], c["top"])
+    labels = properties(path, c.get("defines", []))
     prove = [(l, t) for l, t in labels if l in c.get("properties", [l])]
     if len(prove) != len(c.get("properties", prove)):
         raise SpecError(f"hw/formal.json: a check of {c['unit']} names properties its file does not have")
     if c.get("cut") and c["method"] != "pdr":
         raise SpecError(f"hw/formal.json: a check of {c['unit']} cuts wires: only a pdr check can")
     check_instance = c["instance"] + (f", {c['note']}" if "note" in c else "")
-    return dict(unit=c["unit"], top=c["top"], check_instance=check_instance, depth=depth,
+    # The module yosys elaborates: TOP itself, or its wrapper when the properties read only TOP's ports.
+    proven_top = c["top"] + ("_formal" if path.suffix == ".sv" else "")
+    return dict(unit=c["unit"], top=c["top"], proven_top=proven_top, check_instance=check_instance, depth=depth,
                 instance=check_instance + (f", DEPTH {depth}" if depth else ""),
                 method=c["method"], k=c.get("k"), bmc=max(c.get("bmc", 0), c.get("k", 0)),
                 smt_arrays=c.get("smt_arrays", False), also=c.get("also", []), defines=c.get("defines", []),
@@ -264,12 +262,23 @@ def job(c, depth, pkg_files, src_dir, generated):
                 prove=prove)
 
 
+def instances(spec):
+    """Each instance's overrides, an instance "like" another one taking that one's first."""
+    def resolved(name, seen=()):
+        if name in seen or name not in spec["instances"]:
+            raise SpecError(f"hw/formal.json: instance {name}: unknown, or 'like' goes round in a circle")
+        items = dict(spec["instances"][name])
+        base = items.pop("like", None)
+        return dict(resolved(base, seen + (name,)), **items) if base else items
+    return {name: resolved(name) for name in spec["instances"]}
+
+
 def plan(spec, generated_pkg, scratch, units):
     """The proof jobs and the seeded-bug jobs (one each). GENERATED_PKG: the build's girtd_pkg.sv, whose
     folder also holds the generated tables the RTL includes (the DDA's PROM)."""
     generated, include_dir = generated_pkg.read_text(), generated_pkg.resolve().parent
     pkg_files = {}
-    for name, overrides in spec["instances"].items():
+    for name, overrides in instances(spec).items():
         f = scratch / f"pkg_{name}.sv"
         f.write_text(package(generated, overrides, name))
         pkg_files[name] = str(f)
