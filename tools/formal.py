@@ -182,7 +182,9 @@ def prove_pdr(job, work, label):
     if label:  # this one must be there (a missing one would leave nothing to prove)
         script += f"select -assert-count 1 t:$assert {job['proven_top']}/{label} %i\n"
         script += f"chformal -assert -remove t:$assert {job['proven_top']}/{label} %d\n"
-    script += ("memory_map\nopt\nasync2sync\nflatten\nsetundef -undriven -anyseq\ndelete -output\n"
+    # One clock, or every clock the wrapper makes from the global clock (flip-flops sampling on its steps).
+    script += "memory_map\nopt\n" + ("clk2fflogic\n" if job["multiclock"] else "async2sync\n")
+    script += ("flatten\nsetundef -undriven -anyseq\ndelete -output\n"
                "techmap\nopt -fast\ndffunmap\nabc -g AND\nopt_clean\nwrite_aiger -zinit model.aig\n")
     (work / "model.ys").write_text(script)
     p = run(["yosys", "-q", "model.ys"], work, "yosys.log")
@@ -247,8 +249,9 @@ def job(c, depth, pkg_files, src_dir, generated):
     prove = [(l, t) for l, t in labels if l in c.get("properties", [l])]
     if len(prove) != len(c.get("properties", prove)):
         raise SpecError(f"hw/formal.json: a check of {c['unit']} names properties its file does not have")
-    if c.get("cut") and c["method"] != "pdr":
-        raise SpecError(f"hw/formal.json: a check of {c['unit']} cuts wires: only a pdr check can")
+    for only_pdr in ("cut", "multiclock"):
+        if c.get(only_pdr) and c["method"] != "pdr":
+            raise SpecError(f"hw/formal.json: a check of {c['unit']} is '{only_pdr}': only a pdr check can be")
     check_instance = c["instance"] + (f", {c['note']}" if "note" in c else "")
     # The module yosys elaborates: TOP itself, or its wrapper when the properties read only TOP's ports.
     proven_top = c["top"] + ("_formal" if path.suffix == ".sv" else "")
@@ -256,7 +259,7 @@ def job(c, depth, pkg_files, src_dir, generated):
                 instance=check_instance + (f", DEPTH {depth}" if depth else ""),
                 method=c["method"], k=c.get("k"), bmc=max(c.get("bmc", 0), c.get("k", 0)),
                 smt_arrays=c.get("smt_arrays", False), also=c.get("also", []), defines=c.get("defines", []),
-                cut=c.get("cut", []),
+                cut=c.get("cut", []), multiclock=c.get("multiclock", False),
                 parameters=dict(c.get("parameters", {}), **({"DEPTH": depth} if depth else {})),
                 pkg_file=pkg_files[c["instance"]], src_dir=str(src_dir), generated=str(generated), labels=labels,
                 prove=prove)
