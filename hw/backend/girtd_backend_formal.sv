@@ -57,9 +57,8 @@ module girtd_backend_formal #(
   (* anyconst *) logic [5:0] f_options;
   (* anyconst *) logic [3*girtd_pkg::COLOR_OUT-1:0] f_background;
 
-  logic idle, dda_active, push;
+  logic idle, push;
   logic [CW-1:0] fifo_count;
-  logic [girtd_pkg::DDA_STATE_W-1:0] dda_state;
   girtd_backend u_be (
       .clk_i(f_clk), .rst_ni(rst_n), .dda_clk_i(dda_clk), .dda_step_o(dda_step),
       .dda_period_ticks_i(f_period), .had_access_ticks_i(f_access), .had_blend_ticks_i(f_blend),
@@ -70,7 +69,7 @@ module girtd_backend_formal #(
       .clamped_i, .r_i, .r_dx_i, .r_dy_i, .g_i, .g_dx_i, .g_dy_i, .b_i, .b_dx_i, .b_dy_i, .t_i, .t_dx_i, .t_dy_i,
       .z_i, .z_dx_i, .z_dy_i, .d1_i, .d1_dx_i, .d1_dy_i, .d2_i, .d2_dx_i, .d2_dy_i, .d3_i, .d3_dx_i, .d3_dy_i,
       .clear_i, .background_i(f_background), .flush_i, .swap_i, .idle_o(idle), .front_o(),
-      .dda_state_o(dda_state), .dda_active_o(dda_active), .pixel_push_o(push), .pixel_x_o(), .pixel_y_o(),
+      .dda_state_o(), .dda_active_o(), .pixel_push_o(push), .pixel_x_o(), .pixel_y_o(),
       .ticks_i(LT'(1)), .quiet_o(), .dda_clocks_o(), .dda_wait_ticks_o(), .pixels_generated_o(), .written_o(),
       .blended_o(), .z_rejected_o(), .dropped_o(), .page_misses_o(), .had_busy_ticks_o(), .had_vram_wait_ticks_o(),
       .fifo_max_o(), .fifo_count_o(fifo_count), .wraps_o(), .clips_o(), .triangles_affected_o(), .first_affected_o());
@@ -96,26 +95,30 @@ module girtd_backend_formal #(
   // (PDR closes those; one bound from the last input to idle, over a whole
   // triangle's walk, it did not, in 600 s; nor the drain after the DDA's
   // last pixel with the real VRAM: hw/README.md):
-  // - dda_acts: while the DDA is on a triangle, it acts (a DDA clock spent on
-  //   it) within f_act_bound ticks: a DDA period, and a pop when its output
-  //   waits on a full FIFO;
+  // - dda_clocked: the DDA is clocked (dda_step_o) at least once every
+  //   f_clock_bound ticks, whatever its state: a DDA period, and a pop when
+  //   its output waits on a full FIFO. Inside the back end every clock of the
+  //   DDA's gated clock is one it acts on (its enable and ready tied high);
   // - fifo_pops: while the FIFO holds a pixel, one leaves within
   //   f_pop_bound ticks (the pixel in the HAD finished, then the head's page
   //   fetched: an access, a blend, a write-back and a fetch, each VRAM cycle
   //   maybe behind a stolen one);
   // - with dda_idle (hw/dda/dda_formal.sv, the DDA alone, whatever its enable
-  //   and back-pressure: idle within F_DDA_CLOCKS acting clocks of the last
-  //   parameter set offered): the DDA is idle within F_DDA_CLOCKS x
-  //   f_act_bound ticks of the last input, and the FIFO empty (DEPTH + 1) x
-  //   f_pop_bound ticks later.
+  //   and back-pressure: idle, its output empty, within F_DDA_CLOCKS acting
+  //   clocks of the last parameter set offered): the DDA is idle within
+  //   F_DDA_CLOCKS x f_clock_bound ticks of the last input, and the FIFO
+  //   empty (DEPTH + 1) x f_pop_bound ticks later.
   // The bounds are loose sums of the timing: they need only be finite.
+  // Their width holds them at the largest timing the ports can carry.
   localparam int F_DDA_CLOCKS = W * (W + 4) + 1 + girtd_pkg::OUT_LATENCY;
-  localparam int F_BOUND_W = 10;
-  logic [F_BOUND_W-1:0] f_period_ticks, f_cycle_ticks, f_pixel_ticks, f_act_bound, f_pop_bound;
+  localparam int F_TMAX = (1 << TW) - 1, F_LMAX = (1 << LT) - 1;
+  localparam int F_BOUND_MAX = (1 << girtd_pkg::DDA_PERIOD_W) + 2 * (8 * F_TMAX + 4) + F_LMAX + 4;
+  localparam int F_BOUND_W = $clog2(F_BOUND_MAX + 2);
+  logic [F_BOUND_W-1:0] f_period_ticks, f_cycle_ticks, f_pixel_ticks, f_clock_bound, f_pop_bound;
   assign f_period_ticks = f_period == '0 ? F_BOUND_W'(1) : F_BOUND_W'(f_period);
   assign f_cycle_ticks = f_cycle == '0 ? F_BOUND_W'(1) : F_BOUND_W'(f_cycle);
   assign f_pixel_ticks = F_BOUND_W'(f_access) + F_BOUND_W'(f_blend) + 6 * f_cycle_ticks + F_BOUND_W'(4);
-  assign f_act_bound = f_period_ticks + 2 * f_pixel_ticks + F_BOUND_W'(f_clear) + F_BOUND_W'(4);
+  assign f_clock_bound = f_period_ticks + 2 * f_pixel_ticks + F_BOUND_W'(f_clear) + F_BOUND_W'(4);
   assign f_pop_bound = 2 * f_pixel_ticks + F_BOUND_W'(f_clear) + F_BOUND_W'(4);
 
   // A pop, seen at the ports: the count is not what it was plus a push.
@@ -124,17 +127,16 @@ module girtd_backend_formal #(
   always_ff @(posedge f_clk) {f_count_q, f_push_q, f_counted_q} <= {fifo_count, push, rst_n};
   assign f_popped = f_counted_q && (CW + 1)'(fifo_count) != (CW + 1)'(f_count_q) + (CW + 1)'(f_push_q);
 
-  // Ticks the DDA has been on a triangle without acting; ticks the FIFO has
-  // held a pixel without a pop.
-  logic [F_BOUND_W-1:0] f_unacted_q, f_unpopped_q;
+  // Ticks since the DDA was last clocked; ticks the FIFO has held a pixel
+  // without a pop.
+  logic [F_BOUND_W-1:0] f_unclocked_q, f_unpopped_q;
   always_ff @(posedge f_clk) begin
-    f_unacted_q <= !rst_n || dda_state == girtd_pkg::S_IDLE || dda_active ? '0
-                   : f_unacted_q + F_BOUND_W'(f_unacted_q != '1);
+    f_unclocked_q <= !rst_n || dda_step ? '0 : f_unclocked_q + F_BOUND_W'(f_unclocked_q != '1);
     f_unpopped_q <= !rst_n || fifo_count == '0 || f_popped ? '0 : f_unpopped_q + F_BOUND_W'(f_unpopped_q != '1);
   end
 
   always_comb if (rst_n) begin
-    dda_acts: assert (f_unacted_q < f_act_bound);  // on a triangle, the DDA acts within a DDA period and a pop (hw/README.md)
+    dda_clocked: assert (f_unclocked_q < f_clock_bound);  // the DDA is clocked at least once every DDA period and pop, whatever its state (hw/README.md)
     fifo_pops: assert (f_unpopped_q < f_pop_bound);  // a pixel in the FIFO: one leaves within the HAD's time for two pixels (hw/README.md)
   end
 endmodule
