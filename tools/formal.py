@@ -17,7 +17,10 @@ which the unit includes under `ifdef FORMAL_TOP, or of hw/UNIT/TOP_formal.sv,
 a wrapper module TOP_formal, where they read only TOP's ports; the comment
 after each is its row in the table. A pdr check may name wires to "cut":
 each is then driven by a free input instead of its logic, so what is proven
-holds whatever those wires carry. An instance may start "like" another and
+holds whatever those wires carry; a "multiclock" pdr check models every
+clock its wrapper makes from the solver's global clock (yosys clk2fflogic:
+each flip-flop takes its input of the step before its clock rises), for a
+top with a gated clock. An instance may start "like" another and
 override more items. Each seeded bug is a one-line change to a unit; it is
 caught when some property of that unit then fails.
 
