@@ -1,8 +1,6 @@
 #include "io/model_precheck.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <cstring>
 #include <fstream>
 #include <string_view>
 #include <vector>
@@ -153,77 +151,6 @@ uint64_t precheck_off(const std::string& path, const std::string& text) {
     }
   }
   return polygons;
-}
-
-// A little-endian float32 at `p`.
-double float_at(const char* p) {
-  uint32_t bits = 0;
-  for (int i = 3; i >= 0; --i) bits = (bits << 8) | static_cast<unsigned char>(p[i]);
-  float f = 0;
-  std::memcpy(&f, &bits, sizeof f);
-  return f;
-}
-
-// Returns the triangles: a binary file's count, an ASCII file's facets.
-// Binary or ASCII is told as assimp 5.2.5 tells it (STLLoader's IsBinarySTL
-// first): binary when the size is 84 + 50 x the count at byte 80, whatever
-// the header's text ("solid" starts many binary headers), else ASCII when
-// it starts with "solid" after any blanks.
-uint64_t precheck_stl(const std::string& path, const std::string& data) {
-  const uint64_t size = data.size();
-  uint32_t n = 0;
-  if (size >= 84)
-    for (int i = 3; i >= 0; --i) n = (n << 8) | static_cast<unsigned char>(data[80 + static_cast<size_t>(i)]);
-  const bool binary = size >= 84 && 84 + 50 * uint64_t{n} == size;
-  const size_t text_start = data.find_first_not_of(" \t");
-  if (!binary && text_start != std::string::npos && data.compare(text_start, 5, "solid") == 0) {
-    if (const int line = odd_line_end(data)) fail(path, line, kOddLineEnd);
-    std::vector<std::string_view> tok;
-    uint64_t facets = 0;  // "facet normal": several may share a line; a solid may be named "facet"
-    int corners = 0;      // of the facet being read: assimp 5.2.5 throws (and leaks) on other than 3
-    int line = 0, facet_line = 0;
-    for (size_t at = 0; at < data.size(); ++line) {
-      size_t end = data.find('\n', at);
-      if (end == std::string::npos) end = data.size();
-      split_tokens(std::string_view(data).substr(at, end - at), tok);
-      for (size_t k = 0; k < tok.size(); ++k) {
-        if (tok[k] == "facet" && k + 1 < tok.size() && tok[k + 1] == "normal") {
-          if (facets > 0 && corners != 3) fail(path, facet_line, "a facet of " + std::to_string(corners) + " vertices, not 3");
-          ++facets;
-          corners = 0;
-          facet_line = line + 1;
-        }
-        if (tok[k] == "vertex") ++corners;
-        if (tok[k] == "vertex" || tok[k] == "normal")
-          for (size_t c = k + 1; c <= k + 3; ++c) {
-            if (c >= tok.size()) fail(path, line + 1, "'" + std::string(tok[k]) + "' with fewer than 3 numbers");
-            check_finite(path, line + 1, static_cast<int64_t>(facets), tok[c]);
-            check_assimp_real(path, line + 1, tok[c]);
-          }
-      }
-      at = end + 1;
-    }
-    if (facets > 0 && corners != 3) fail(path, facet_line, "a facet of " + std::to_string(corners) + " vertices, not 3");
-    return facets;
-  }
-  if (size < 84)
-    throw InputError::at_byte(path, size,
-                              "binary STL shorter than its 84-byte header (80 bytes of text, a 4-byte triangle count)");
-  if (!binary)
-    throw InputError::at_byte(path, 80,
-                              "binary STL claims " + std::to_string(n) + " triangles (" +
-                                  std::to_string(84 + 50 * uint64_t{n}) + " bytes) but the file has " +
-                                  std::to_string(size) + " bytes");
-  // Each triangle: normal (12 bytes), 3 corners (36), attribute (2).
-  for (uint64_t t = 0; t < n; ++t)
-    for (int c = 0; c < 9; ++c) {
-      const uint64_t at = 84 + 50 * t + 12 + 4 * static_cast<uint64_t>(c);
-      if (!std::isfinite(float_at(data.data() + at)))
-        throw InputError::at_byte(path, at,
-                                  "triangle " + std::to_string(t) + " corner " + std::to_string(c / 3) +
-                                      " has a coordinate that is NaN or infinite");
-    }
-  return n;
 }
 
 }  // namespace

@@ -39,4 +39,8 @@ PrecheckResult precheck_obj(const std::string& path, const std::string& text, st
 // no list length reaches assimp unchecked. Returns the polygons.
 uint64_t precheck_ply(const std::string& path, const std::string& data);
 
+// The STL check (stl_precheck.cpp): a binary file's size and coordinates, an
+// ASCII file read as assimp reads it. Returns the triangles.
+uint64_t precheck_stl(const std::string& path, const std::string& data);
+
 }  // namespace girtd

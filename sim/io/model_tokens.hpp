@@ -91,15 +91,30 @@ inline std::string assimp_real_problem(std::string_view t) {
     fraction = digits();
   }
   if (whole + fraction == 0) return "is not a number";
+  const size_t exponent_at = i;
+  size_t exponent_digits = 0;
   if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
     ++i;
     if (i < t.size() && (t[i] == '-' || t[i] == '+')) ++i;
-    if (digits() == 0) return "is not a number";
+    exponent_digits = digits();
+    if (exponent_digits == 0) return "is not a number";
   }
   if (i != t.size()) return "is not a decimal number";
   if (whole > 18) return "has more than 18 digits before the point";
   double d = 0;
   if (!parse_real(t, d) || !(std::fabs(d) <= 3.4028234663852886e38)) return "is out of a float's range";
+  if (exponent_digits > 9) return "has an exponent of more than 9 digits";
+  if (exponent_digits > 0) {
+    // assimp scales the float it read by powf(10, e): 0e39 reads NaN,
+    // 0.001e39 infinity, though both are in range.
+    double mantissa = 0, exponent = 0;
+    parse_real(t.substr(0, exponent_at), mantissa);
+    parse_real(t.substr(exponent_at + 1), exponent);
+    const float got = float(mantissa) * std::pow(10.0f, float(exponent)), want = float(d);
+    if (!std::isfinite(got) || std::fabs(got - want) > 1e-5f * std::fabs(want) + 1.17549435e-38f)
+      return "is read as " + (std::isnan(got) ? std::string("NaN") : std::isinf(got) ? "infinity" : std::to_string(got)) +
+             " (assimp 5.2.5 applies the exponent as a float power of 10)";
+  }
   if (fraction > 15) {
     const std::string kept = std::string(t.substr(0, fraction_start + 15)) + std::string(t.substr(fraction_start + fraction));
     double dropped = 0;

@@ -117,6 +117,10 @@ PlyHeader read_header(const std::string& path, const std::string& data) {
       return h;
     }
     if (tok[0] == "format") {
+      // assimp 5.2.5 reads the format on line 2; a second `format` line sends
+      // its header reader astray (gigabytes allocated, or a refusal that
+      // leaks: testbench/fuzz/regressions/ply).
+      if (have_format) fail(path, no, "a second 'format' line (the format is given once, on line 2)");
       if (tok.size() < 2) fail(path, no, "'format' without a format");
       if (tok[1] == "ascii") h.format = PlyFormat::kAscii;
       else if (tok[1] == "binary_little_endian") h.format = PlyFormat::kLittleEndian;
@@ -160,7 +164,7 @@ PlyHeader read_header(const std::string& path, const std::string& data) {
       if (list && (!ply_type(tok[2], p.count_type) || !p.count_type.integer))
         fail(path, no, "a list's length type must be an integer type, not '" + std::string(tok[2]) + "'");
       h.elements.back().properties.push_back(p);
-    } else if (tok[0] != "format") {
+    } else {
       fail(path, no, "'" + std::string(tok[0]) + "' is not a PLY header line (format, element, property, comment, "
                          "obj_info, end_header)");
     }

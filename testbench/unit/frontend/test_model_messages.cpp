@@ -75,6 +75,56 @@ TEST_CASE("model messages: what assimp drops from a facet is refused with the fa
   CHECK(error_of([&] { import(stl); }) == stl + ":2: a facet of 4 vertices, not 3");
 }
 
+TEST_CASE("model messages: an ASCII STL is read as assimp reads it, and refused where its reader would throw",
+          "[frontend]") {
+  const std::string facet = "outer loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+  // assimp reads `facet` and `normal` across a line end, and the numbers on
+  // normal's line: a triangle.
+  CHECK(import(temp_file("split.stl", "solid s\nfacet\nnormal 0 0 1\n" + facet + "endsolid s\n")).mesh.polygon_count() ==
+        1);
+  // A facet without `normal` gets no normal from assimp: its normal and
+  // position counts differ, and it throws at the solid's end.
+  const std::string no_normal = temp_file("nonormal.stl", "solid s\nfacet norm 0 0 1\n" + facet + "endsolid s\n");
+  CHECK(error_of([&] { import(no_normal); }) ==
+        no_normal + ":2: 'facet' without 'normal' after it (assimp 5.2.5 would read no normal for it)");
+  // assimp skips blanks, not line ends, before each number.
+  const std::string short_normal = temp_file("shortnormal.stl", "solid s\nfacet normal 0 0\n1\n" + facet + "endsolid\n");
+  CHECK(error_of([&] { import(short_normal); }) == short_normal + ":2: 'facet normal' with fewer than 3 numbers on its line");
+  // assimp starts a solid as if a facet had just ended: a vertex there is dropped.
+  const std::string stray = temp_file("stray.stl", "solid s\nvertex 0 0 0\nfacet normal 0 0 1\n" + facet + "endsolid\n");
+  CHECK(error_of([&] { import(stray); }) == stray + ":2: a 'vertex' before any 'facet normal'");
+  // Every solid is read: the second one's facet of 2 vertices.
+  const std::string second = temp_file("second.stl", "solid a\nfacet normal 0 0 1\n" + facet + "endsolid a\nsolid b\n" +
+                                                         "facet normal 0 0 1\nvertex 0 0 0\nvertex 1 0 0\nendsolid b\n");
+  CHECK(error_of([&] { import(second); }) == second + ":11: a facet of 2 vertices, not 3");
+}
+
+TEST_CASE("model messages: an STL assimp would convert, or read only in part, is refused", "[frontend]") {
+  const std::string facet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+  // assimp strips a UTF-8 byte-order mark before it tells binary from ASCII.
+  const std::string bom = temp_file("bom.stl", "\xEF\xBB\xBFsolid s\n" + facet + "endsolid s\n");
+  CHECK(error_of([&] { import(bom); }) ==
+        bom + ":1: the file starts with a byte-order mark (assimp 5.2.5 converts the whole file, a binary one too, from it)");
+  // After `endsolid`, assimp reads on only into another `solid`.
+  const std::string after = temp_file("after.stl", "solid s\n" + facet + "endsolid s\n" + facet);
+  CHECK(error_of([&] { import(after); }) ==
+        after + ":10: text after 'endsolid' that is not another 'solid' (assimp 5.2.5 drops it)");
+  // An ASCII file whose bytes 80-83 ("8333" inside a name) make 84 + 50 n wrap
+  // to its size in assimp's 32 bits: assimp reads it as binary.
+  std::string wrapped = "solid " + std::string(74, 'x') + "8333 y\n" + facet + "endsolid\n";
+  wrapped += std::string(324 - wrapped.size() - 1, ' ') + "\n";
+  REQUIRE(wrapped.size() == 324);  // 84 + 50 x 858993464 = 324 (mod 2^32)
+  const std::string wrap = temp_file("wrap.stl", wrapped);
+  CHECK(error_of([&] { import(wrap); }) == wrap + ":@80: binary STL claims 858993464 triangles (42949673284 bytes) but "
+                                                  "the file has 324 bytes");
+}
+
+TEST_CASE("model messages: a PLY header gives its format once", "[frontend]") {
+  const std::string path = temp_file("twoformats.ply", "ply\nformat ascii 1.0\ncomment x\nformat binary_little_endian 1.0\n"
+                                                       "element vertex 0\nend_header\n");
+  CHECK(error_of([&] { import(path); }) == path + ":4: a second 'format' line (the format is given once, on line 2)");
+}
+
 TEST_CASE("model messages: what assimp 5.2.5 would misread without a word is refused with its line", "[frontend]") {
   CHECK(error_of([] { import(temp_file("bom.obj", "\xEF\xBB\xBF" + kTriangle + "f 1 2 3\n")); }) ==
         "/tmp/girtd_frontend_test_bom.obj:1: the file starts with a UTF-8 byte-order mark (assimp 5.2.5 would lose its "
@@ -237,4 +287,13 @@ TEST_CASE("model messages: a round-trip double is read, digits assimp drops are 
   CHECK(error_of([] { import(temp_file("tiny.obj", "v 0.00000000000000012 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); }) ==
         "/tmp/girtd_frontend_test_tiny.obj:1: '0.00000000000000012' has more than 15 digits after the point; assimp "
         "5.2.5 drops the rest and would read 0.000000000000000 (assimp 5.2.5 would misread it)");
+  // Exponents: assimp scales by powf(10, e), where 10^39 is already infinite.
+  CHECK(import(temp_file("exp.obj", "v 1e-005 0 0\nv 1.5E+2 0 0\nv 0 2.e1 0\nf 1 2 3\n")).mesh.polygon_count() == 1);
+  CHECK(error_of([] { import(temp_file("zeroexp.obj", "v 0e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); }) ==
+        "/tmp/girtd_frontend_test_zeroexp.obj:1: '0e39' is read as NaN (assimp 5.2.5 applies the exponent as a float "
+        "power of 10) (assimp 5.2.5 would misread it)");
+  CHECK(error_of([] { import(temp_file("bigexp.obj", "v 0.001e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); }).find(
+            "'0.001e39' is read as infinity") != std::string::npos);
+  CHECK(error_of([] { import(temp_file("longexp.obj", "v 1e-99999999999999999999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); })
+            .find("has an exponent of more than 9 digits") != std::string::npos);
 }
