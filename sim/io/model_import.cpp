@@ -371,6 +371,10 @@ std::optional<PrecheckResult> check_file(const std::string& path, std::vector<st
   if (size == 0) fail(path, 0, "empty file");
   if (!std::ifstream(path)) fail(path, 0, "cannot open file");
   const std::string ext = lower_extension(path);
+  if (ext == ".gltf" || ext == ".glb") {
+    precheck_gltf(path, read_model_bytes(path, size));
+    return std::nullopt;
+  }
   if (!is_checked_model_format(ext)) return std::nullopt;
   return precheck_model(path, ext, size, warnings);
 }

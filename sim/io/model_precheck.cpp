@@ -159,12 +159,17 @@ bool is_checked_model_format(const std::string& lower_ext) {
   return lower_ext == ".obj" || lower_ext == ".off" || lower_ext == ".ply" || lower_ext == ".stl";
 }
 
-PrecheckResult precheck_model(const std::string& path, const std::string& lower_ext, uint64_t size,
-                              std::vector<std::string>& warnings) {
-  std::ifstream in(path, std::ios::binary);  // read once, for every check and count below
+std::string read_model_bytes(const std::string& path, uint64_t size) {
+  std::ifstream in(path, std::ios::binary);
   std::string data(static_cast<size_t>(size), '\0');
   in.read(data.data(), static_cast<std::streamsize>(size));
   data.resize(static_cast<size_t>(in.gcount()));
+  return data;
+}
+
+PrecheckResult precheck_model(const std::string& path, const std::string& lower_ext, uint64_t size,
+                              std::vector<std::string>& warnings) {
+  const std::string data = read_model_bytes(path, size);  // read once, for every check and count below
   if (lower_ext == ".obj") return precheck_obj(path, data, warnings);
   if (lower_ext == ".off") return {precheck_off(path, data), {}};
   if (lower_ext == ".ply") return {precheck_ply(path, data), {}};

@@ -25,6 +25,9 @@ struct PrecheckResult {
   std::set<std::string> undefined_materials;
 };
 
+// The file's first `size` bytes (fewer if it is shorter now).
+std::string read_model_bytes(const std::string& path, uint64_t size);
+
 // Reads the file once (`size` bytes) and dispatches on the extension;
 // appends what it can go on from (an OBJ's missing material library) to
 // `warnings`.
@@ -42,5 +45,10 @@ uint64_t precheck_ply(const std::string& path, const std::string& data);
 // The STL check (stl_precheck.cpp): a binary file's size and coordinates, an
 // ASCII file read as assimp reads it. Returns the triangles.
 uint64_t precheck_stl(const std::string& path, const std::string& data);
+
+// The glTF check (gltf_precheck.cpp), .gltf and .glb: every accessor within
+// its buffer view, every view within its buffer, known accessor and
+// component types. Counts nothing: assimp's own checks follow.
+void precheck_gltf(const std::string& path, const std::string& data);
 
 }  // namespace girtd

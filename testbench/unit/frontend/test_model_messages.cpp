@@ -297,3 +297,77 @@ TEST_CASE("model messages: a round-trip double is read, digits assimp drops are 
   CHECK(error_of([] { import(temp_file("longexp.obj", "v 1e-99999999999999999999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); })
             .find("has an exponent of more than 9 digits") != std::string::npos);
 }
+
+namespace {
+
+// A glTF 2.0 triangle: three float VEC3 positions (36 bytes, embedded), one
+// accessor per line from line 6 on, `accessor` the position accessor's text.
+std::string gltf_triangle(const std::string& accessor, const std::string& more_accessors = "") {
+  return "{\"asset\": {\"version\": \"2.0\"},\n"
+         "\"scenes\": [{\"nodes\": [0]}], \"nodes\": [{\"mesh\": 0}],\n"
+         "\"meshes\": [{\"primitives\": [{\"attributes\": {\"POSITION\": 0}}]}],\n"
+         "\"buffers\": [{\"byteLength\": 36, \"uri\": \"data:application/octet-stream;base64,"
+         "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA\"}],\n"
+         "\"bufferViews\": [{\"buffer\": 0, \"byteLength\": 36}],\n"
+         "\"accessors\": [" + accessor + more_accessors + "\n]}\n";
+}
+
+// The same document as a binary glTF: a 12-byte header and one JSON chunk
+// (its length padded to 4 with blanks, as the format asks).
+std::string glb_of(std::string json) {
+  while (json.size() % 4) json += ' ';
+  auto u32 = [](uint32_t v) { return std::string{char(v), char(v >> 8), char(v >> 16), char(v >> 24)}; };
+  return "glTF" + u32(2) + u32(static_cast<uint32_t>(20 + json.size())) + u32(static_cast<uint32_t>(json.size())) +
+         "JSON" + json;
+}
+
+}  // namespace
+
+TEST_CASE("model messages: a glTF accessor within its buffer view is read, one past it is refused", "[frontend]") {
+  const std::string positions = "\n{\"bufferView\": 0, \"componentType\": 5126, \"count\": 3, \"type\": \"VEC3\", "
+                                "\"min\": [0, 0, 0], \"max\": [1, 1, 0]}";
+  CHECK(import(temp_file("tri.gltf", gltf_triangle(positions))).mesh.polygon_count() == 1);
+  // An offset of 4: the 3 x 12 bytes end at byte 40 of the 36-byte view (assimp
+  // 5.2.5 bounds the read by the view's length alone and reads 4 bytes past it).
+  const std::string shifted = "\n{\"bufferView\": 0, \"byteOffset\": 4, \"componentType\": 5126, \"count\": 3, "
+                              "\"type\": \"VEC3\", \"min\": [0, 0, 0], \"max\": [1, 1, 0]}";
+  const std::string past = temp_file("past.gltf", gltf_triangle(shifted));
+  CHECK(error_of([&] { import(past); }) ==
+        past + ":7: accessor 0: its elements run past its buffer view of 36 bytes (offset 4, 3 x 12 bytes apart; "
+               "assimp 5.2.5 would read past it)");
+  // The same in a .glb: its JSON chunk's line.
+  const std::string glb = temp_file("past.glb", glb_of(gltf_triangle(shifted)));
+  CHECK(error_of([&] { import(glb); }) ==
+        glb + ": accessor 0 (line 7 of the JSON chunk): its elements run past its buffer view of 36 bytes (offset 4, "
+              "3 x 12 bytes apart; assimp 5.2.5 would read past it)");
+  // A stride: 3 elements 16 bytes apart need 2 x 16 + 12 = 44 bytes.
+  std::string strided = gltf_triangle(positions);
+  strided.replace(strided.find("\"byteLength\": 36}]"), 18, "\"byteLength\": 36, \"byteStride\": 16}]");
+  const std::string stride = temp_file("stride.gltf", strided);
+  CHECK(error_of([&] { import(stride); }) ==
+        stride + ":7: accessor 0: its elements run past its buffer view of 36 bytes (offset 0, 3 x 16 bytes apart; "
+                 "assimp 5.2.5 would read past it)");
+}
+
+TEST_CASE("model messages: a glTF buffer view past its buffer, or an unknown type, is refused with its line", "[frontend]") {
+  const std::string positions = "\n{\"bufferView\": 0, \"componentType\": 5126, \"count\": 3, \"type\": \"VEC3\"}";
+  std::string longer = gltf_triangle(positions);
+  longer.replace(longer.find("\"byteLength\": 36}]"), 18, "\"byteOffset\": 8, \"byteLength\": 36}]");
+  const std::string view = temp_file("view.gltf", longer);
+  CHECK(error_of([&] { import(view); }) ==
+        view + ":5: buffer view 0: bytes 8 to 44 of a buffer of 36 (assimp 5.2.5 would read past it)");
+  const std::string vec6 = temp_file("vec6.gltf", gltf_triangle(positions, ",\n{\"bufferView\": 0, \"componentType\": "
+                                                                           "5126, \"count\": 1, \"type\": \"VEC6\"}"));
+  CHECK(error_of([&] { import(vec6); }) == vec6 + ":8: accessor 1: type \"VEC6\" is not a glTF accessor type");
+  const std::string code = temp_file("code.gltf", gltf_triangle(positions, ",\n{\"bufferView\": 0, \"componentType\": "
+                                                                           "5127, \"count\": 1, \"type\": \"VEC3\"}"));
+  CHECK(error_of([&] { import(code); }) == code + ":8: accessor 1: componentType 5127 is not a glTF component type");
+  // Sparse values: 2 replaced VEC3s (24 bytes) from byte 24 of the 36-byte view.
+  const std::string sparse = temp_file(
+      "sparse.gltf", gltf_triangle(positions, ",\n{\"componentType\": 5126, \"count\": 3, \"type\": \"VEC3\", \"sparse\": "
+                                              "{\"count\": 2, \"indices\": {\"bufferView\": 0, \"componentType\": 5125}, "
+                                              "\"values\": {\"bufferView\": 0, \"byteOffset\": 24}}}"));
+  CHECK(error_of([&] { import(sparse); }) ==
+        sparse + ":8: accessor 1: its sparse values run past its buffer view of 36 bytes (offset 24, 2 x 12 bytes "
+                 "apart; assimp 5.2.5 would read past it)");
+}
