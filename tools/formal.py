@@ -303,10 +303,11 @@ def plan(spec, generated_pkg, scratch, units):
     for i, bug in enumerate(spec["seeded_bugs"]):
         if units and bug["unit"] not in units:
             continue
-        # The first check of the bug's unit on its instance (if it names one), a liveness check if it says so.
+        # The first check of the bug's unit on its instance (if it names one) that proves the property
+        # the bug names, else one that proves every property of the unit's file.
         c = next((c for c in spec["checks"] if c["unit"] == bug["unit"] and
                   c["instance"] == bug.get("instance", c["instance"]) and
-                  bool(c.get("defines")) == (bug.get("check") == "liveness")), None)
+                  (bug["property"] in c.get("properties", []) if "property" in bug else "properties" not in c)), None)
         if c is None:
             raise SpecError(f"hw/formal.json: seeded bug '{bug['bug']}': no check of {bug['unit']} to run it with")
         work = scratch / f"bug{i}"

@@ -12,8 +12,9 @@
 // the timing and options constant: the options and the FIFO's limit (1..DEPTH)
 // free, each timing the value its parameter gives (in ticks; -1: free within
 // its port's width and the configuration's rules, a stolen VRAM cycle every 0
-// (never) or at least two VRAM cycles; PDR closed these checks with the
-// timing fixed, not free, hw/README.md); one base tick per edge (ticks_i = 1, as in hardware);
+// (never) or at least two VRAM cycles; dda_clocked is proven with the
+// timing free, fifo_pops with it fixed: hw/README.md); one base tick per
+// edge (ticks_i = 1, as in hardware);
 // every parameter set within the preparer's contract (models/dda/README.md:
 // the box cut to the window, Xmin <= X0 <= Xmax, Y0 <= Ymax); a clear asked
 // for only while the back end is idle. hw/formal.json cuts the DDA's state
@@ -91,34 +92,31 @@ module girtd_backend_formal #(
     if (CLEAR >= 0) assume (32'(f_clear) == CLEAR);
   end
 
-  // No deadlock on the way out of the DDA, in properties of short reach
-  // (PDR closes those; one bound from the last input to idle, over a whole
-  // triangle's walk, it did not, in 600 s; nor the drain after the DDA's
-  // last pixel with the real VRAM: hw/README.md):
-  // - dda_clocked: the DDA is clocked (dda_step_o) at least once every
-  //   f_clock_bound ticks, whatever its state: a DDA period, and a pop when
-  //   its output waits on a full FIFO. Inside the back end every clock of the
-  //   DDA's gated clock is one it acts on (its enable and ready tied high);
-  // - fifo_pops: while the FIFO holds a pixel, one leaves within
-  //   f_pop_bound ticks (the pixel in the HAD finished, then the head's page
-  //   fetched: an access, a blend, a write-back and a fetch, each VRAM cycle
-  //   maybe behind a stolen one);
-  // - with dda_idle (hw/dda/dda_formal.sv, the DDA alone, whatever its enable
-  //   and back-pressure: idle, its output empty, within F_DDA_CLOCKS acting
-  //   clocks of the last parameter set offered): the DDA is idle within
-  //   F_DDA_CLOCKS x f_clock_bound ticks of the last input, and the FIFO
-  //   empty (DEPTH + 1) x f_pop_bound ticks later.
-  // The bounds are loose sums of the timing: they need only be finite.
-  // Their width holds them at the largest timing the ports can carry.
-  localparam int F_DDA_CLOCKS = W * (W + 4) + 1 + girtd_pkg::OUT_LATENCY;
+  // No deadlock on the way out of the DDA, in two properties of short reach:
+  // - dda_clocked, at any timing: the DDA is clocked (dda_step_o) within a
+  //   DDA period of ticks in which the FIFO has room, whatever its state.
+  //   Inside the back end every clock of the DDA's gated clock is one it
+  //   acts on (its enable and ready tied high), and it pushes only on its
+  //   clocks, so once the FIFO has room it keeps it until the next clock;
+  // - fifo_pops, at the timing hw/formal.json fixes: while the FIFO holds a
+  //   pixel, one leaves within f_pop_bound ticks (the pixel in the HAD
+  //   finished, then the head's page fetched: an access, a blend, a
+  //   write-back and a fetch, each VRAM cycle maybe behind a stolen one).
+  //   At any timing the HAD's had_pops and the VRAM's vram_busy_run give
+  //   the same (hw/README.md); this one checks the back end's own wiring
+  //   between the FIFO and the HAD.
+  // With dda_idle (hw/dda/dda_formal.sv, the DDA alone: idle, its output
+  // empty, within W (W + 4) + 1 + OUT_LATENCY acting clocks of the last
+  // parameter set), the DDA is idle within that many (DDA period + pop
+  // bound) ticks of the last input, and the FIFO empty DEPTH pop bounds
+  // later (hw/README.md, "No deadlock").
   localparam int F_TMAX = (1 << TW) - 1, F_LMAX = (1 << LT) - 1;
   localparam int F_BOUND_MAX = (1 << girtd_pkg::DDA_PERIOD_W) + 2 * (8 * F_TMAX + 4) + F_LMAX + 4;
   localparam int F_BOUND_W = $clog2(F_BOUND_MAX + 2);
-  logic [F_BOUND_W-1:0] f_period_ticks, f_cycle_ticks, f_pixel_ticks, f_clock_bound, f_pop_bound;
+  logic [F_BOUND_W-1:0] f_period_ticks, f_cycle_ticks, f_pixel_ticks, f_pop_bound;
   assign f_period_ticks = f_period == '0 ? F_BOUND_W'(1) : F_BOUND_W'(f_period);
   assign f_cycle_ticks = f_cycle == '0 ? F_BOUND_W'(1) : F_BOUND_W'(f_cycle);
   assign f_pixel_ticks = F_BOUND_W'(f_access) + F_BOUND_W'(f_blend) + 6 * f_cycle_ticks + F_BOUND_W'(4);
-  assign f_clock_bound = f_period_ticks + 2 * f_pixel_ticks + F_BOUND_W'(f_clear) + F_BOUND_W'(4);
   assign f_pop_bound = 2 * f_pixel_ticks + F_BOUND_W'(f_clear) + F_BOUND_W'(4);
 
   // A pop, seen at the ports: the count is not what it was plus a push.
@@ -127,16 +125,23 @@ module girtd_backend_formal #(
   always_ff @(posedge f_clk) {f_count_q, f_push_q, f_counted_q} <= {fifo_count, push, rst_n};
   assign f_popped = f_counted_q && (CW + 1)'(fifo_count) != (CW + 1)'(f_count_q) + (CW + 1)'(f_push_q);
 
-  // Ticks since the DDA was last clocked; ticks the FIFO has held a pixel
-  // without a pop.
-  logic [F_BOUND_W-1:0] f_unclocked_q, f_unpopped_q;
-  always_ff @(posedge f_clk) begin
-    f_unclocked_q <= !rst_n || dda_step ? '0 : f_unclocked_q + F_BOUND_W'(f_unclocked_q != '1);
+  // Ticks the FIFO has held a pixel without a pop.
+  logic [F_BOUND_W-1:0] f_unpopped_q;
+  always_ff @(posedge f_clk)
     f_unpopped_q <= !rst_n || fifo_count == '0 || f_popped ? '0 : f_unpopped_q + F_BOUND_W'(f_unpopped_q != '1);
+  always_comb if (rst_n) begin
+    fifo_pops: assert (f_unpopped_q < f_pop_bound);  // a pixel in the FIFO: one leaves within the HAD's time for two pixels, at one timing (hw/README.md)
   end
 
+`ifdef FORMAL_BACKEND_ANY_TIMING
+  // Ticks since the DDA was last clocked in which the FIFO had room. (Kept
+  // out of fifo_pops' check: with this counter in its model, PDR took 574 s
+  // on it instead of 14.)
+  logic [F_BOUND_W-1:0] f_unclocked_q;
+  always_ff @(posedge f_clk)
+    f_unclocked_q <= !rst_n || dda_step ? '0 : f_unclocked_q + F_BOUND_W'(fifo_count < f_limit && f_unclocked_q != '1);
   always_comb if (rst_n) begin
-    dda_clocked: assert (f_unclocked_q < f_clock_bound);  // the DDA is clocked at least once every DDA period and pop, whatever its state (hw/README.md)
-    fifo_pops: assert (f_unpopped_q < f_pop_bound);  // a pixel in the FIFO: one leaves within the HAD's time for two pixels (hw/README.md)
+    dda_clocked: assert (f_unclocked_q <= f_period_ticks);  // the DDA is clocked within a DDA period of ticks in which the FIFO has room, at any timing (hw/README.md)
   end
+`endif
 endmodule

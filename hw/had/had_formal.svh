@@ -7,13 +7,11 @@
 // for and the FIFO has drained, no new pixel until the flush is done (the
 // harness flushes after the DDA has finished). The VRAM is abstract: it takes
 // a request when not busy, runs one operation at a time and ends each with
-// one done; the data it returns is free. For the safety properties it may take
-// any time; had_idle (FORMAL_HAD_LIVENESS) also needs it to end each operation
-// within F_VRAM_TICKS ticks and to be busy for other work (refresh, scan-out,
-// a clear) at most F_VRAM_TICKS ticks in a row, and its bound holds for that
-// VRAM only (the thesis' VRAM cycle is 44 ticks: see hw/README.md).
-localparam int F_VRAM_TICKS = 3;
-localparam int F_IDLE_BOUND = 96;  // ticks from the last input to idle (see had_idle)
+// one done; the data it returns is free, and so is its time: it may take any
+// number of ticks to take a request and to end an operation. The progress
+// properties (FORMAL_HAD_LIVENESS) therefore count the HAD's own ticks, those
+// in which the VRAM is not busy; with the real VRAM's busy runs
+// (vram_busy_run) they give bounds in ticks (hw/README.md).
 logic f_past_q = 1'b0;
 always_ff @(posedge clk_i) f_past_q <= 1'b1;
 logic [girtd_pkg::TIME_W-1:0] f_access_q, f_blend_q;
@@ -43,20 +41,22 @@ always_comb begin
 end
 
 `ifdef FORMAL_HAD_LIVENESS
-// For had_idle only: the VRAM answers within F_VRAM_TICKS and is busy for
-// other work at most F_VRAM_TICKS in a row; the ticks since the input stopped
-// (the FIFO empty and no flush asked for).
-logic [3:0] f_vram_age_q, f_vram_other_q;
-logic [7:0] f_quiet_q;
+// For had_pops and had_idle only: progress in the HAD's own ticks, those in
+// which the VRAM is not busy (with an operation of the HAD's or other work),
+// so that the VRAM may take any time. With the real VRAM, busy at most
+// 2 max(cycle, 1) ticks in a row (vram_busy_run), a bound of N own ticks is
+// one of N (2 max(cycle, 1) + 1) ticks (hw/README.md).
+localparam int F_OWN_W = 7;
+logic [F_OWN_W-1:0] f_unpopped_q, f_quiet_q, f_pixel_own;
+function automatic logic [F_OWN_W-1:0] f_count(input logic [F_OWN_W-1:0] n);  // own ticks, saturating
+  f_count = n + F_OWN_W'(!vram_busy_i && n != '1);
+endfunction
 always_ff @(posedge clk_i) begin
-  f_vram_age_q <= !rst_ni || !f_vram_op_q || vram_done_i ? '0 : f_vram_age_q + 1'b1;
-  f_vram_other_q <= !rst_ni || f_vram_op_q || !vram_busy_i ? '0 : f_vram_other_q + 1'b1;
-  f_quiet_q <= !rst_ni || !fifo_empty_i || flush_i ? '0 : f_quiet_q + 8'(f_quiet_q != '1);
+  // a pixel waiting in the FIFO: own ticks since the last pop; the input stopped: own ticks since
+  f_unpopped_q <= !rst_ni || fifo_empty_i || fifo_pop_o ? '0 : f_count(f_unpopped_q);
+  f_quiet_q <= !rst_ni || !fifo_empty_i || flush_i ? '0 : f_count(f_quiet_q);
 end
-always_comb begin
-  if (32'(f_vram_age_q) >= F_VRAM_TICKS) assume (vram_done_i);
-  if (32'(f_vram_other_q) >= F_VRAM_TICKS) assume (!vram_busy_i);
-end
+assign f_pixel_own = F_OWN_W'(f_access_q) + F_OWN_W'(f_blend_q) + F_OWN_W'(4);  // an access, a blend, hand-overs
 `endif
 
 // One pixel, chosen by the solver, followed: the value the HAD last wrote to
@@ -106,8 +106,9 @@ always_comb if (f_past_q && rst_ni) begin
   had_pop_not_empty: assert (!fifo_pop_o || !fifo_empty_i);  // never pops an empty FIFO
   had_load_or_write: assert (!(cache_load && cache_write));  // never loads a page and writes a pixel in the same tick (the cache's contract)
 `ifdef FORMAL_HAD_LIVENESS
-  if (32'(f_quiet_q) >= F_IDLE_BOUND && !flush_i)
-    had_idle: assert (idle_o);  // input stopped: idle (flush done, write-behind and prefetch drained) within F_IDLE_BOUND ticks, for a VRAM that answers within F_VRAM_TICKS
+  had_pops: assert (f_unpopped_q < 2 * f_pixel_own);  // a pixel in the FIFO: one is popped within 2 (access + blend + 4) own ticks (ticks the VRAM is not busy; any VRAM)
+  if (f_quiet_q >= 2 * f_pixel_own + F_OWN_W'(8) && !flush_i)
+    had_idle: assert (idle_o);  // input stopped: idle (flush done, write-behind and prefetch drained) within 2 (access + blend + 4) + 8 own ticks (any VRAM)
 `endif
   if (f_in_write_behind_q)
     had_write_behind_held: assert (wb_pending_q && wb_page_q == f_page && f_cell_of(wb_data_q) == f_value_q);  // the write-behind register holds its page until it is written

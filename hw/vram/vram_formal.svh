@@ -128,36 +128,32 @@ always_comb if (f_past_q && rst_ni) begin
 end
 
 `ifdef FORMAL_VRAM_LIVENESS
-// For had_idle (hw/had/had_formal.svh), which is proven for any VRAM that
-// ends each operation within F_VRAM_TICKS ticks and is busy for other work
-// at most F_VRAM_TICKS ticks in a row: this VRAM is such a VRAM when its
-// cycle is at most F_VRAM_TICKS ticks and a stolen cycle comes at most once
-// in two cycles (so a steal owed behind an operation never meets the next),
-// from the first tick it is idle after each clear. The harness's frame
-// start is the environment: a clear asked for only with the VRAM idle, and
-// no page request until the VRAM is idle again (the harness waits for the
-// back end's idle_o, which includes the VRAM's, so a backlog of stolen
-// cycles owed during a long clear is worked off first). The counters are
-// had_formal.svh's, from the same ports.
-localparam int F_VRAM_TICKS = 3;  // had_formal.svh's
+// For had_pops and had_idle (hw/had/had_formal.svh), which count the HAD's
+// own ticks, those in which the VRAM is not busy: this VRAM is busy at most
+// 2 max(cycle, 1) ticks in a row (a page operation, then a stolen cycle owed
+// behind it) whenever a stolen cycle comes at most once in two cycles (the
+// least period the config accepts), from the first tick it is idle after
+// each clear. The harness's frame start is the environment: a clear asked
+// for only with the VRAM idle, and no page request until the VRAM is idle
+// again (the harness waits for the back end's idle_o, which includes the
+// VRAM's, so a backlog of stolen cycles owed during a long clear is worked
+// off first).
 logic f_op_q, f_settled_q;
-logic [3:0] f_age_q, f_other_q;
+logic [LT:0] f_busy_run_q, f_run_bound;
 always_ff @(posedge clk_i) begin
   if (!rst_ni) f_op_q <= 1'b0;
   else if (f_take) f_op_q <= 1'b1;
   else if (done_o) f_op_q <= 1'b0;
-  f_age_q <= !rst_ni || !f_op_q || done_o ? '0 : f_age_q + 1'b1;
-  f_other_q <= !rst_ni || f_op_q || !busy_o ? '0 : f_other_q + 1'b1;
+  f_busy_run_q <= !rst_ni || !busy_o ? '0 : f_busy_run_q + (LT + 1)'(f_busy_run_q != '1);
   f_settled_q <= !rst_ni || (!clear_i && (f_settled_q || !busy_o));  // busy_o is not yet high on the clear's own tick
 end
+assign f_run_bound = 2 * (cycle_ticks_i == '0 ? (LT + 1)'(1) : (LT + 1)'(cycle_ticks_i));
 always_comb begin
-  assume (32'(cycle_ticks_i) <= F_VRAM_TICKS);
-  assume (steal_period_ticks_i == '0 || 32'(steal_period_ticks_i) >= 2 * (cycle_ticks_i == '0 ? 1 : 32'(cycle_ticks_i)));
+  assume (steal_period_ticks_i == '0 || (LT + 1)'(steal_period_ticks_i) >= f_run_bound);
   if (clear_i) assume (f_settled_q && !busy_o && !f_op_q);
   if (!f_settled_q) assume (!req_i);
 end
 always_comb if (f_past_q && rst_ni) begin
-  if (32'(f_age_q) >= F_VRAM_TICKS) vram_answers: assert (done_o);  // each page operation ends within 3 ticks (for a cycle of at most 3 ticks)
-  if (f_settled_q && 32'(f_other_q) >= F_VRAM_TICKS) vram_other_work: assert (!busy_o);  // from its first idle tick after a clear, busy for other work (a stolen cycle) at most 3 ticks in a row (cycle at most 3 ticks, a steal at most once in two cycles)
+  if (f_settled_q && busy_o) vram_busy_run: assert (f_busy_run_q < f_run_bound);  // from its first idle tick after a clear, busy at most 2 max(cycle, 1) ticks in a row (a steal at most once in two cycles)
 end
 `endif
