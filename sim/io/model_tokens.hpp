@@ -17,6 +17,13 @@ namespace girtd {
   throw InputError(path, line, what);
 }
 
+// A little-endian uint32 at `p` (binary STL and glTF containers).
+inline uint32_t u32_at(const char* p) {
+  uint32_t bits = 0;
+  for (int i = 3; i >= 0; --i) bits = (bits << 8) | static_cast<unsigned char>(p[i]);
+  return bits;
+}
+
 inline std::string vertices_text(int64_t n) { return std::to_string(n) + (n == 1 ? " vertex" : " vertices"); }
 
 // The line (from 1) of the first line end in `text` that assimp 5.2.5 reads

@@ -17,12 +17,7 @@ namespace {
 // assimp's AI_MAXLEN: a solid's name must be shorter.
 constexpr size_t kMaxSolidName = 1024;
 
-// A little-endian uint32 / float32 at `p`.
-uint32_t u32_at(const char* p) {
-  uint32_t bits = 0;
-  for (int i = 3; i >= 0; --i) bits = (bits << 8) | static_cast<unsigned char>(p[i]);
-  return bits;
-}
+// A little-endian float32 at `p`.
 double float_at(const char* p) {
   const uint32_t bits = u32_at(p);
   float f = 0;

@@ -301,7 +301,7 @@ TEST_CASE("model messages: a round-trip double is read, digits assimp drops are 
 namespace {
 
 // A glTF 2.0 triangle: three float VEC3 positions (36 bytes, embedded), one
-// accessor per line from line 6 on, `accessor` the position accessor's text.
+// accessor per line from line 7 on, `accessor` the position accessor's text.
 std::string gltf_triangle(const std::string& accessor, const std::string& more_accessors = "") {
   return "{\"asset\": {\"version\": \"2.0\"},\n"
          "\"scenes\": [{\"nodes\": [0]}], \"nodes\": [{\"mesh\": 0}],\n"
@@ -355,7 +355,8 @@ TEST_CASE("model messages: a glTF buffer view past its buffer, or an unknown typ
   longer.replace(longer.find("\"byteLength\": 36}]"), 18, "\"byteOffset\": 8, \"byteLength\": 36}]");
   const std::string view = temp_file("view.gltf", longer);
   CHECK(error_of([&] { import(view); }) ==
-        view + ":5: buffer view 0: bytes 8 to 44 of a buffer of 36 (assimp 5.2.5 would read past it)");
+        view + ":5: buffer view 0: bytes 8 to 44 of buffer 0 of 36 bytes (a view lies within its buffer; "
+               "assimp 5.2.5's glTF 1 reader reads past it)");
   const std::string vec6 = temp_file("vec6.gltf", gltf_triangle(positions, ",\n{\"bufferView\": 0, \"componentType\": "
                                                                            "5126, \"count\": 1, \"type\": \"VEC6\"}"));
   CHECK(error_of([&] { import(vec6); }) == vec6 + ":8: accessor 1: type \"VEC6\" is not a glTF accessor type");
@@ -370,4 +371,66 @@ TEST_CASE("model messages: a glTF buffer view past its buffer, or an unknown typ
   CHECK(error_of([&] { import(sparse); }) ==
         sparse + ":8: accessor 1: its sparse values run past its buffer view of 36 bytes (offset 24, 2 x 12 bytes "
                  "apart; assimp 5.2.5 would read past it)");
+}
+
+TEST_CASE("model messages: glTF is read with assimp's defaults and strides, and as one JSON reading", "[frontend]") {
+  // No componentType: assimp reads BYTE; 3 VEC3 bytes 4 apart from byte 30 end at 41.
+  const std::string bytes = temp_file("bytes.gltf", gltf_triangle("\n{\"bufferView\": 0, \"componentType\": 5126, "
+                                                                   "\"count\": 3, \"type\": \"VEC3\"}",
+                                                                   ",\n{\"bufferView\": 0, \"byteOffset\": 30, "
+                                                                   "\"count\": 3, \"type\": \"VEC3\"}"));
+  CHECK(error_of([&] { import(bytes); }) ==
+        bytes + ":8: accessor 1: its elements run past its buffer view of 36 bytes (offset 30, 3 x 3 bytes apart; "
+                "assimp 5.2.5 would read past it)");
+  // glTF 2: an accessor's own byteStride is not read (the view's is): 3 x 12 bytes fit the 36.
+  const std::string own = temp_file("ownstride.gltf", gltf_triangle("\n{\"bufferView\": 0, \"byteStride\": 24, "
+                                                                    "\"componentType\": 5126, \"count\": 3, "
+                                                                    "\"type\": \"VEC3\", \"min\": [0, 0, 0], "
+                                                                    "\"max\": [1, 1, 0]}"));
+  CHECK(import(own).mesh.polygon_count() == 1);
+  // A view's stride below the element's size.
+  std::string narrow = gltf_triangle("\n{\"bufferView\": 0, \"componentType\": 5126, \"count\": 3, \"type\": \"VEC3\"}");
+  narrow.replace(narrow.find("\"byteLength\": 36}]"), 18, "\"byteLength\": 36, \"byteStride\": 4}]");
+  const std::string stride = temp_file("narrow.gltf", narrow);
+  CHECK(error_of([&] { import(stride); }) ==
+        stride + ":7: accessor 0: a stride of 4 bytes, less than its elements' 12 (glTF asks for at least that; "
+                 "assimp 5.2.5 reads past the view)");
+  // A key given twice: assimp's RapidJSON keeps the first (here an offset of 12, past the view), nlohmann the last.
+  const std::string twice = temp_file("twice.gltf", gltf_triangle("\n{\"bufferView\": 0, \"byteOffset\": 12, "
+                                                                  "\"byteOffset\": 0, \"componentType\": 5126, "
+                                                                  "\"count\": 3, \"type\": \"VEC3\"}"));
+  CHECK(error_of([&] { import(twice); }) ==
+        twice + ":7: the key \"byteOffset\" twice in one object (assimp 5.2.5 reads the first, this check the last)");
+  // Text that is not JSON (a byte of no UTF-8 character in a string): refused, not passed over.
+  std::string latin = gltf_triangle("\n{\"bufferView\": 0, \"componentType\": 5126, \"count\": 3, \"type\": \"VEC3\"}");
+  latin.replace(latin.find("\"2.0\"}"), 7, "\"2.0\", \"extras\": \"\xff\"}");
+  const std::string bad = temp_file("latin.gltf", latin);
+  CHECK(error_of([&] { import(bad); }).rfind(bad + ": not JSON as glTF asks: ", 0) == 0);
+}
+
+TEST_CASE("model messages: glTF 1 views, ids and accessor strides are checked the same way", "[frontend]") {
+  // glTF 1.0: collections keyed by id, the stride on the accessor, a buffer's byteLength optional.
+  auto gltf1 = [](const std::string& accessor, const std::string& buffer_length) {
+    return "{\"asset\": {\"version\": \"1.0\"},\n"
+           "\"buffers\": {\"data\": {" + buffer_length + "\"uri\": \"data:application/octet-stream;base64,"
+           "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA\"}},\n"
+           "\"bufferViews\": {\"v/1\": {\"buffer\": \"data\", \"byteLength\": 36}},\n"
+           "\"accessors\": {\n\"pos\": " + accessor + "\n}}\n";
+  };
+  const std::string strided = temp_file("v1stride.gltf", gltf1("{\"bufferView\": \"v/1\", \"byteStride\": 16, "
+                                                               "\"componentType\": 5126, \"count\": 3, "
+                                                               "\"type\": \"VEC3\"}", "\"byteLength\": 36, "));
+  CHECK(error_of([&] { import(strided); }) ==
+        strided + ":5: accessor pos: its elements run past its buffer view of 36 bytes (offset 0, 3 x 16 bytes apart; "
+                  "assimp 5.2.5 would read past it)");
+  // A view past a buffer that gives its length; none checked where it does not.
+  const std::string shorter = temp_file("v1short.gltf", gltf1("{\"bufferView\": \"v/1\", \"componentType\": 5126, "
+                                                              "\"count\": 3, \"type\": \"VEC3\"}",
+                                                              "\"byteLength\": 24, "));
+  CHECK(error_of([&] { import(shorter); }) ==
+        shorter + ":3: buffer view v/1: bytes 0 to 36 of buffer data of 24 bytes (a view lies within its buffer; "
+                  "assimp 5.2.5's glTF 1 reader reads past it)");
+  const std::string unsized = temp_file("v1unsized.gltf", gltf1("{\"bufferView\": \"v/1\", \"componentType\": 5126, "
+                                                                "\"count\": 3, \"type\": \"VEC3\"}", ""));
+  CHECK(error_of([&] { import(unsized); }).find("buffer view") == std::string::npos);
 }
