@@ -312,7 +312,7 @@ def plan(spec, generated_pkg, scratch, units):
             raise SpecError(f"hw/formal.json: seeded bug '{bug['bug']}': no check of {bug['unit']} to run it with")
         work = scratch / f"bug{i}"
         bugs.append(dict(job(c, c.get("depths", [None])[0], pkg_files, sources(c["unit"], bug, work), include_dir),
-                         bug=bug["bug"], work=str(work / "run")))
+                         bug=bug["bug"], property=bug.get("property"), work=str(work / "run")))
     return proofs, bugs
 
 
@@ -441,9 +441,12 @@ def main():
     bug_rows = []
     for bug in bugs:
         v = verdicts[id(bug)]
-        bug_rows.append(dict(unit=bug["unit"], bug=bug["bug"], instance=bug["instance"], caught_by=v.get("failed"),
-                             seconds=v["seconds"], **({"detail": v["error"]} if "error" in v else {})))
-        failures += "failed" not in v
+        # Caught: some property of its check failed, the one it names where it names one.
+        caught = v.get("failed") if bug["property"] in (None, v.get("failed")) else None
+        bug_rows.append(dict(unit=bug["unit"], bug=bug["bug"], instance=bug["instance"], caught_by=caught,
+                             seconds=v["seconds"], **({"detail": v["error"]} if "error" in v else {}),
+                             **({"failed_instead": v["failed"]} if "failed" in v and not caught else {})))
+        failures += caught is None
 
     md, summary = render(rows, bug_rows)
     print("\n".join(md) + "\n\n" + summary)

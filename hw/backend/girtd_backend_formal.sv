@@ -96,8 +96,10 @@ module girtd_backend_formal #(
   // - dda_clocked, at any timing: the DDA is clocked (dda_step_o) within a
   //   DDA period of ticks in which the FIFO has room, whatever its state.
   //   Inside the back end every clock of the DDA's gated clock is one it
-  //   acts on (its enable and ready tied high), and it pushes only on its
-  //   clocks, so once the FIFO has room it keeps it until the next clock;
+  //   acts on (its enable and ready tied high);
+  // - fifo_fills_on_clocks, at any timing: the FIFO's count grows only on
+  //   a tick the DDA is clocked, so once it has room it keeps it until the
+  //   next clock;
   // - fifo_pops, at the timing hw/formal.json fixes: while the FIFO holds a
   //   pixel, one leaves within f_pop_bound ticks (the pixel in the HAD
   //   finished, then the head's page fetched: an access, a blend, a
@@ -108,8 +110,8 @@ module girtd_backend_formal #(
   // With dda_idle (hw/dda/dda_formal.sv, the DDA alone: idle, its output
   // empty, within W (W + 4) + 1 + OUT_LATENCY acting clocks of the last
   // parameter set), the DDA is idle within that many (DDA period + pop
-  // bound) ticks of the last input, and the FIFO empty DEPTH pop bounds
-  // later (hw/README.md, "No deadlock").
+  // bound) ticks of the last input, and the FIFO empty at most its limit of
+  // pop bounds later (hw/README.md, "No deadlock").
   localparam int F_TMAX = (1 << TW) - 1, F_LMAX = (1 << LT) - 1;
   localparam int F_BOUND_MAX = (1 << girtd_pkg::DDA_PERIOD_W) + 2 * (8 * F_TMAX + 4) + F_LMAX + 4;
   localparam int F_BOUND_W = $clog2(F_BOUND_MAX + 2);
@@ -138,10 +140,15 @@ module girtd_backend_formal #(
   // out of fifo_pops' check: with this counter in its model, PDR took 574 s
   // on it instead of 14.)
   logic [F_BOUND_W-1:0] f_unclocked_q;
-  always_ff @(posedge f_clk)
+  logic f_step_q;
+  always_ff @(posedge f_clk) begin
     f_unclocked_q <= !rst_n || dda_step ? '0 : f_unclocked_q + F_BOUND_W'(fifo_count < f_limit && f_unclocked_q != '1);
+    f_step_q <= dda_step;
+  end
   always_comb if (rst_n) begin
-    dda_clocked: assert (f_unclocked_q <= f_period_ticks);  // the DDA is clocked within a DDA period of ticks in which the FIFO has room, at any timing (hw/README.md)
+    dda_clocked: assert (f_unclocked_q < f_period_ticks);  // the DDA is clocked within a DDA period of ticks in which the FIFO has room, at any timing (hw/README.md)
+    if (f_counted_q && fifo_count > f_count_q)
+      fifo_fills_on_clocks: assert (f_step_q);  // the FIFO fills only on a tick the DDA is clocked, at any timing (hw/README.md)
   end
 `endif
 endmodule

@@ -46,7 +46,8 @@ end
 // so that the VRAM may take any time. With the real VRAM, busy at most
 // 2 max(cycle, 1) ticks in a row (vram_busy_run), a bound of N own ticks is
 // one of N (2 max(cycle, 1) + 1) ticks (hw/README.md).
-localparam int F_OWN_W = 7;
+localparam int F_OWN_MAX = 2 * (2 * ((1 << girtd_pkg::TIME_W) - 1) + 4) + 8;  // had_idle's bound at the largest timing
+localparam int F_OWN_W = $clog2(F_OWN_MAX + 2);  // saturates above every bound: no violation hidden
 logic [F_OWN_W-1:0] f_unpopped_q, f_quiet_q, f_pixel_own;
 function automatic logic [F_OWN_W-1:0] f_count(input logic [F_OWN_W-1:0] n);  // own ticks, saturating
   f_count = n + F_OWN_W'(!vram_busy_i && n != '1);

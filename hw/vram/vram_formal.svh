@@ -150,7 +150,7 @@ end
 assign f_run_bound = 2 * (cycle_ticks_i == '0 ? (LT + 1)'(1) : (LT + 1)'(cycle_ticks_i));
 always_comb begin
   assume (steal_period_ticks_i == '0 || (LT + 1)'(steal_period_ticks_i) >= f_run_bound);
-  if (clear_i) assume (f_settled_q && !busy_o && !f_op_q);
+  if (clear_i) assume (f_settled_q && !busy_o && (!f_op_q || done_o));  // the back end's idle_o may rise on a write's done tick
   if (!f_settled_q) assume (!req_i);
 end
 always_comb if (f_past_q && rst_ni) begin
